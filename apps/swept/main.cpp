@@ -1,0 +1,27 @@
+// swept: can this part be taken out, and how?
+#include "commands.h"
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "swept: collision and distance queries on rigid triangle meshes with RSS trees,\n"
+      "and certified, deterministic 6-DOF assembly/disassembly path planning."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "swept 0.1.0");
+  swept::cli::add_bvh_command(app);
+  swept::cli::add_scene_command(app);
+  swept::cli::add_mesh_stats_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const swept::cli::ExitCode& e) {
+    return e.code;
+  } catch (const std::exception& e) {
+    std::cerr << "swept: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

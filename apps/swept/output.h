@@ -1,0 +1,53 @@
+#pragma once
+/// Small helpers for the CLI's aligned tables and number formatting.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace swept::cli {
+
+/// An aligned text table: numbers right-aligned, text left-aligned.
+class Table {
+ public:
+  explicit Table(std::vector<std::string> header) : rows_{std::move(header)} {}
+  void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+  void print(std::ostream& os) const {
+    std::vector<std::size_t> width;
+    for (const auto& r : rows_)
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        if (width.size() <= i) width.push_back(0);
+        width[i] = std::max(width[i], r[i].size());
+      }
+    for (std::size_t k = 0; k < rows_.size(); ++k) {
+      const auto& r = rows_[k];
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        const bool numeric = k > 0 && !r[i].empty() && (std::isdigit(static_cast<unsigned char>(r[i][0])) || r[i][0] == '-');
+        const std::string pad(width[i] - r[i].size(), ' ');
+        os << (i ? "  " : "") << (numeric ? pad + r[i] : r[i] + (i + 1 < r.size() ? pad : ""));
+      }
+      os << "\n";
+    }
+  }
+
+ private:
+  std::vector<std::vector<std::string>> rows_;
+};
+
+inline std::string fmt_fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+inline std::string fmt_sci(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+inline std::string fmt_int(std::size_t v) { return std::to_string(v); }
+
+}  // namespace swept::cli

@@ -1,0 +1,86 @@
+#pragma once
+/// Bounding-volume hierarchies of Rectangle Swept Spheres, built top-down with one of the
+/// three fitters of the paper (SPEC §2): PQP_FIT, RAPID2_FIT and INERTIA_FIT.
+#include "swept/geometry/result.h"
+#include "swept/geometry/rss.h"
+#include "swept/geometry/types.h"
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace swept {
+
+/// How a node's split position and candidate axes are computed (SPEC §2.1).
+enum class Fitter : std::uint8_t {
+  pqp,      ///< PQP_FIT: vertex mean and covariance (Gottschalk et al. 1996; PQP).
+  rapid2,   ///< RAPID2_FIT: area-weighted covariance of the triangles, convex hull skipped.
+  inertia,  ///< INERTIA_FIT: shell centroid and area-weighted tensor of inertia (the paper).
+};
+
+/// How a node's triangles are divided between its two children (SPEC §2.2).
+enum class SplitRule : std::uint8_t {
+  min_sa,   ///< IPS CDC: try e1, e2, e3 and keep the smallest SA(left) + SA(right).
+  largest,  ///< PQP: split across e1 only.
+};
+
+std::string_view to_string(Fitter f);
+std::string_view to_string(SplitRule s);
+/// Parses "pqp" | "rapid2" | "inertia". Returns false on anything else.
+bool parse_fitter(std::string_view text, Fitter& out);
+/// Parses "min-sa" | "largest". Returns false on anything else.
+bool parse_split_rule(std::string_view text, SplitRule& out);
+
+/// Build options. The defaults are the paper's method with IPS CDC's split rule.
+struct BuildConfig {
+  Fitter fitter = Fitter::inertia;
+  SplitRule split = SplitRule::min_sa;
+  int leaf_size = 1;       ///< a node with at most this many triangles is a leaf (≥ 1)
+  bool parallel = true;    ///< use oneTBB; the tree is identical either way
+};
+
+/// One node of the flat tree: 128 bytes. A leaf holds `count` > 0 triangles starting at
+/// `first` in `Bvh::triangles`; an internal node has `count` == 0 and its children at
+/// `first` and `first + 1` (siblings are adjacent).
+struct Node {
+  Rss bv;                  ///< in the model frame; contains every vertex of the subtree
+  std::int32_t first = 0;
+  std::int32_t count = 0;
+
+  bool is_leaf() const { return count > 0; }
+};
+static_assert(sizeof(Node) == 128, "Node byte budget");
+
+/// An immutable RSS tree over a triangle soup. Safe to share between threads for queries.
+struct Bvh {
+  std::vector<Node> nodes;                ///< nodes[0] is the root
+  std::vector<Triangle> triangles;        ///< the input triangles, reordered leaf by leaf
+  std::vector<std::uint32_t> triangle_ids;///< triangle_ids[i]: input index of triangles[i]
+  BuildConfig config;                     ///< how it was built
+  int depth = 0;                          ///< levels: 1 for a single leaf
+  double extent = 0.0;                    ///< diagonal of the model's bounding box
+
+  bool empty() const { return nodes.empty(); }
+  /// Bytes held by the tree (nodes, triangles and ids).
+  std::size_t memory_bytes() const;
+};
+
+/// Builds the RSS tree of a triangle soup (SPEC §2). Errors (never exceptions): empty input,
+/// NaN or infinite coordinates (the triangle is named). Degenerate triangles are accepted.
+/// With `config.parallel` the work is spread over oneTBB's threads; the tree is the same,
+/// node for node, as a serial build.
+Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& config = {});
+
+/// Tree figures reported by `swept bvh` (the paper's Tables II and IV).
+struct BvhStats {
+  std::size_t triangles = 0;
+  std::size_t nodes = 0;
+  int depth = 0;
+  double total_surface_area = 0.0;  ///< sum of SA over all nodes' RSSs
+  double total_volume = 0.0;        ///< sum of V over all nodes' RSSs
+  std::size_t bytes = 0;
+};
+BvhStats stats(const Bvh& bvh);
+
+}  // namespace swept

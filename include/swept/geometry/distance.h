@@ -1,0 +1,90 @@
+#pragma once
+/// Exact closest-point primitives in double precision: point–segment, segment–segment,
+/// point–triangle, triangle–triangle (distance and intersection) and rectangle–rectangle /
+/// RSS–RSS lower bounds (Larsen, Gottschalk, Lin, Manocha 1999).
+///
+/// Every function takes its inputs in one common frame and returns points in that frame.
+/// Degenerate input is legal everywhere: zero-length segments are points, zero-area triangles
+/// (collinear or repeated vertices) are treated as the union of their edges.
+#include "swept/geometry/rss.h"
+#include "swept/geometry/types.h"
+
+namespace swept {
+
+/// A closest point and its distance.
+struct PointClosest {
+  double distance = 0.0;
+  Vec3 point = Vec3::Zero();  ///< the closest point on the primitive
+};
+
+/// Closest point on segment [a, b] to `x`. A zero-length segment is the point a.
+PointClosest point_segment_closest(const Vec3& x, const Vec3& a, const Vec3& b);
+
+/// Closest points between two segments.
+struct SegmentClosest {
+  double distance = 0.0;
+  Vec3 point_a = Vec3::Zero();  ///< on [p0, p1]
+  Vec3 point_b = Vec3::Zero();  ///< on [q0, q1]
+};
+
+/// Exact closest points of segments [p0, p1] and [q0, q1]: the minimum of the interior
+/// stationary pair (when it exists) and the four endpoint–segment cases, so parallel and
+/// nearly parallel segments are exact too. Zero-length segments are points.
+SegmentClosest segment_closest_points(const Vec3& p0, const Vec3& p1, const Vec3& q0,
+                                      const Vec3& q1);
+
+/// Closest point of triangle `t` to `x`. A triangle whose area is below 1e-13·(longest edge)²
+/// is treated as the union of its three edges.
+PointClosest point_triangle_closest(const Vec3& x, const Triangle& t);
+
+/// Distance and closest points between two triangles.
+struct TriangleDistance {
+  double distance = 0.0;
+  Vec3 point_a = Vec3::Zero();  ///< on triangle a
+  Vec3 point_b = Vec3::Zero();  ///< on triangle b
+};
+
+/// Exact triangle–triangle distance: the minimum over the 6 vertex–triangle and 9 edge–edge
+/// cases, and 0 (with a common point as both witnesses) when an edge of one triangle crosses
+/// the other. Degenerate triangles fall back to their edges.
+TriangleDistance triangle_distance(const Triangle& a, const Triangle& b);
+
+/// The contact tolerance used by `triangles_intersect`: 1e-12 times the largest absolute
+/// coordinate of the six vertices (rounding of coordinates that far from the origin is below
+/// it). Depends on the frame the triangles are given in.
+double touch_tolerance(const Triangle& a, const Triangle& b);
+
+/// Do the triangles intersect or touch? True when their exact distance is at most
+/// `touch_tolerance(a, b)`, so coplanar overlap, edge-on-edge and vertex-on-face contact count
+/// as intersecting. Degenerate triangles are tested as segments or points.
+bool triangles_intersect(const Triangle& a, const Triangle& b);
+
+/// Rectangle B placed in the frame of rectangle A, where A is [−a0, a0] × [−a1, a1] × {0}:
+/// B = { translation + s·rotation.col(0) + t·rotation.col(1) : |s| ≤ b0, |t| ≤ b1 }.
+struct RectanglePair {
+  Mat3 rotation = Mat3::Identity();  ///< B's axes in A's frame (columns)
+  Vec3 translation = Vec3::Zero();   ///< B's center in A's frame
+  double a[2] = {0.0, 0.0};          ///< A's half lengths
+  double b[2] = {0.0, 0.0};          ///< B's half lengths
+};
+
+/// Exact distance between the two rectangles (0 when they intersect), minus a relative slack
+/// of 1e-12·(‖translation‖ + sizes) so rounding never makes it exceed the true distance.
+/// Clamped at 0.
+double rectangle_distance(const RectanglePair& pair);
+
+/// A cheap lower bound on the rectangles' distance: the largest gap of their projections on
+/// the axes of both rectangles, the four edge–edge cross products and the center line
+/// (separating-axis reasoning). Never larger than `rectangle_distance`; may be 0 or negative
+/// when the rectangles' projections overlap on every axis.
+double rectangle_gap(const RectanglePair& pair);
+
+/// The pair for two RSSs given in one common frame.
+RectanglePair rectangle_pair(const Rss& a, const Rss& b);
+
+/// Lower bound on the distance between the volumes of two RSSs given in one common frame:
+/// rectangle distance − radius(a) − radius(b), clamped at 0. Never larger than the true
+/// distance between any point set each RSS contains.
+double rss_distance(const Rss& a, const Rss& b);
+
+}  // namespace swept

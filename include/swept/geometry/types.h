@@ -1,0 +1,73 @@
+#pragma once
+/// Basic math and mesh value types shared by every layer of swept.
+///
+/// All coordinates are double precision, in the model's length unit (millimetres unless the
+/// importer was told otherwise). Eigen types are used at the API, as FCL, Coal and OMPL do.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace swept {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+/// A triangle given by its three vertices, in the frame of the mesh that holds it.
+/// Degenerate triangles (zero area, repeated vertices) are legal everywhere in swept.
+struct Triangle {
+  Vec3 p = Vec3::Zero();
+  Vec3 q = Vec3::Zero();
+  Vec3 r = Vec3::Zero();
+
+  const Vec3& operator[](int i) const { return i == 0 ? p : (i == 1 ? q : r); }
+  Vec3& operator[](int i) { return i == 0 ? p : (i == 1 ? q : r); }
+};
+
+/// Area of a triangle: ½‖(p − q) × (p − r)‖. Zero for degenerate triangles.
+double area(const Triangle& t);
+
+/// Centroid (p + q + r) / 3.
+Vec3 centroid(const Triangle& t);
+
+/// Twice the area divided by the squared longest edge: 0 for degenerate triangles,
+/// √3/2 for an equilateral one. Used to count degenerate triangles.
+double shape_quality(const Triangle& t);
+
+/// Aspect ratio: longest edge over the triangle's smallest height (∞ for zero area).
+double aspect_ratio(const Triangle& t);
+
+/// A triangle soup: triangles in one frame, no connectivity required. One soup per part.
+struct TriangleSoup {
+  std::string name;                 ///< part name (from the file, or the file's stem)
+  std::vector<Triangle> triangles;  ///< in the part's frame, in the model's length unit
+};
+
+/// Axis-aligned bounding box.
+struct Aabb {
+  Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
+
+  bool empty() const { return (min.array() > max.array()).any(); }
+  void extend(const Vec3& v) {
+    min = min.cwiseMin(v);
+    max = max.cwiseMax(v);
+  }
+  void extend(const Aabb& b) {
+    min = min.cwiseMin(b.min);
+    max = max.cwiseMax(b.max);
+  }
+  Vec3 center() const { return 0.5 * (min + max); }
+  Vec3 size() const { return empty() ? Vec3::Zero() : Vec3(max - min); }
+  /// Length of the diagonal (0 for an empty box).
+  double extent() const { return empty() ? 0.0 : (max - min).norm(); }
+};
+
+/// Bounding box of a set of triangles.
+Aabb bounds(const std::vector<Triangle>& triangles);
+
+}  // namespace swept

@@ -1,0 +1,117 @@
+#pragma once
+/// Proximity queries between two RSS trees placed in the world (SPEC §3): collide, distance,
+/// tolerance and certified motion clearance. Trees are immutable; every function here is safe
+/// to call concurrently from many threads on the same trees (no locks, no shared mutable state).
+///
+/// Frames: `pose_a` / `pose_b` place model A / B in the world; all returned points are in the
+/// world frame; returned triangle ids are the input indices (`Bvh::triangle_ids`).
+#include "swept/bvh/bvh.h"
+#include "swept/geometry/pose.h"
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace swept {
+
+/// Work counters carried by every result.
+struct QueryStats {
+  std::uint64_t bv_tests = 0;        ///< RSS-pair tests
+  std::uint64_t triangle_tests = 0;  ///< triangle-pair tests
+};
+
+// ---- collide -----------------------------------------------------------------------------------
+struct CollideRequest {
+  bool all_contacts = false;  ///< false: stop at the first intersecting triangle pair
+};
+struct ContactPair {
+  std::uint32_t triangle_a = 0;
+  std::uint32_t triangle_b = 0;
+};
+struct CollideResult {
+  bool colliding = false;
+  std::vector<ContactPair> contacts;  ///< all pairs (all_contacts) or the first one; sorted
+  QueryStats stats;
+};
+CollideResult collide(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                      const CollideRequest& request = {});
+
+// ---- distance ----------------------------------------------------------------------------------
+struct DistanceRequest {
+  double rel_err = 0.0;  ///< stop when the answer is provably within this relative error
+  double abs_err = 0.0;  ///< ... or within this absolute error (PQP semantics)
+  /// Warm start: a known upper bound on the distance (e.g. from a previous query).
+  double upper_bound = std::numeric_limits<double>::infinity();
+  /// Early exit for callers that only need to know the distance is at least this much:
+  /// as soon as the distance is proven ≥ `enough`, stop; then `distance` is a lower bound
+  /// (≥ enough) and `exact` is false.
+  double enough = std::numeric_limits<double>::infinity();
+};
+struct DistanceResult {
+  double distance = std::numeric_limits<double>::infinity();
+  bool exact = true;           ///< false after an early exit (see DistanceRequest::enough)
+  Vec3 point_a = Vec3::Zero(); ///< closest point on A (world)
+  Vec3 point_b = Vec3::Zero(); ///< closest point on B (world)
+  std::uint32_t triangle_a = 0;
+  std::uint32_t triangle_b = 0;
+  QueryStats stats;
+};
+DistanceResult distance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                        const DistanceRequest& request = {});
+
+// ---- tolerance ---------------------------------------------------------------------------------
+struct ToleranceRequest {
+  double tolerance = 0.0;  ///< in the model unit
+};
+struct ToleranceResult {
+  bool within = false;   ///< distance < tolerance
+  double distance = std::numeric_limits<double>::infinity();  ///< witness pair's distance when within
+  Vec3 point_a = Vec3::Zero();
+  Vec3 point_b = Vec3::Zero();
+  std::uint32_t triangle_a = 0;
+  std::uint32_t triangle_b = 0;
+  QueryStats stats;
+};
+ToleranceResult tolerance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                          const ToleranceRequest& request);
+
+// ---- motion clearance (Schwarzer, Saha, Latombe 2005) -------------------------------------------
+struct MotionRequest {
+  double margin = 0.0;             ///< required distance along the whole motion
+  Vec3 reference = Vec3::Zero();   ///< body-frame point the motion interpolates about
+  /// Max distance from `reference` to any vertex of B (body frame); compute it once with
+  /// `motion_radius`. Bounds how far body points move: ‖Δt‖ + radius·Δθ.
+  double radius = 0.0;
+  int max_queries = 100000;        ///< safety cap; exceeded → not certified (free = false)
+};
+struct MotionResult {
+  bool free = false;         ///< certified: distance ≥ margin on the whole continuous segment
+  double t_blocked = -1.0;   ///< when not free: parameter where the distance was found < margin
+  double distance_at_block = 0.0;
+  double min_distance = std::numeric_limits<double>::infinity();  ///< smallest distance bound seen
+  int distance_queries = 0;
+  QueryStats stats;
+};
+/// Is the straight motion of B (pose `from` → `to`, see `interpolate`) against A at `pose_a`
+/// free with distance ≥ margin everywhere? Never reports free when it is not.
+MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& from,
+                              const Pose& to, const MotionRequest& request);
+
+/// Max distance from `reference` to any vertex of the tree's triangles (model frame).
+double motion_radius(const Bvh& b, const Vec3& reference);
+
+/// Motion metric of SPEC §4: ‖Δ reference point‖ + radius · angle(R0, R1). No body point
+/// moves farther than this along the interpolated motion.
+double motion_length(const Pose& from, const Pose& to, const Vec3& reference, double radius);
+
+// ---- batches -----------------------------------------------------------------------------------
+/// Many poses of B against A, answered in parallel (oneTBB); results in input order.
+std::vector<DistanceResult> distance_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
+                                           std::span<const Pose> poses_b,
+                                           const DistanceRequest& request = {});
+std::vector<CollideResult> collide_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
+                                         std::span<const Pose> poses_b,
+                                         const CollideRequest& request = {});
+
+}  // namespace swept

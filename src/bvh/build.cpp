@@ -1,0 +1,242 @@
+// Top-down RSS tree construction (SPEC §2), level by level.
+//
+// Each level's nodes are processed in parallel (oneTBB); each node's work depends only on its
+// own triangles, kept in input order by stable partitions, and node indices are handed out
+// serially in level order afterwards, so the tree is the same node for node at any thread count.
+#include "fit_internal.h"
+#include "swept/bvh/bvh.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <numeric>
+#include <string>
+
+namespace swept {
+
+std::size_t Bvh::memory_bytes() const {
+  return nodes.size() * sizeof(Node) + triangles.size() * sizeof(Triangle) +
+         triangle_ids.size() * sizeof(std::uint32_t) + sizeof(Bvh);
+}
+
+BvhStats stats(const Bvh& bvh) {
+  BvhStats s;
+  s.triangles = bvh.triangles.size();
+  s.nodes = bvh.nodes.size();
+  s.depth = bvh.depth;
+  for (const Node& n : bvh.nodes) {
+    s.total_surface_area += surface_area(n.bv);
+    s.total_volume += volume(n.bv);
+  }
+  s.bytes = bvh.memory_bytes();
+  return s;
+}
+
+namespace {
+
+using detail::TriInfo;
+
+// A node waiting to be processed: its index and its triangle range in `ids`.
+struct Pending {
+  std::int32_t node = 0;
+  std::uint32_t begin = 0, end = 0;
+};
+
+// What processing a node produced: its RSS, and where its triangles split (or a leaf).
+struct Outcome {
+  Rss rss;
+  bool leaf = true;
+  std::uint32_t middle = 0;  // children: [begin, middle) and [middle, end)
+};
+
+struct Scratch {
+  std::vector<Vec3> projected;
+  std::vector<Vec3> sides[2];
+  std::vector<std::uint32_t> ids[2];
+  std::vector<std::uint8_t> side[3];
+};
+
+struct Builder {
+  const BuildConfig& config;
+  const std::vector<Triangle>& tris;  // local frame
+  const std::vector<TriInfo>& info;
+  std::vector<std::uint32_t>& ids;
+  tbb::enumerable_thread_specific<Scratch> scratch;
+
+  // Stable partition of the node's ids by `side` (left first), in place.
+  std::uint32_t apply(const Pending& node, const std::vector<std::uint8_t>& side, Scratch& s) {
+    const std::size_t n = node.end - node.begin;
+    s.ids[0].clear();
+    s.ids[1].clear();
+    for (std::size_t j = 0; j < n; ++j) s.ids[side[j]].push_back(ids[node.begin + j]);
+    std::copy(s.ids[0].begin(), s.ids[0].end(), ids.begin() + node.begin);
+    std::copy(s.ids[1].begin(), s.ids[1].end(), ids.begin() + node.begin + s.ids[0].size());
+    return node.begin + static_cast<std::uint32_t>(s.ids[0].size());
+  }
+
+  Outcome process(const Pending& node) {
+    Outcome out;
+    Scratch& s = scratch.local();
+    const std::size_t n = node.end - node.begin;
+    const std::uint32_t* node_ids = ids.data() + node.begin;
+    // The node's own fit orients its RSS (SPEC §2.3) and gives the split candidates (§2.2).
+    const Fit f = detail::fit_ids(info.data(), node_ids, n, config.fitter);
+    const Vec3 origin = tris[node_ids[0]].p;
+    detail::project_vertices(tris.data(), node_ids, n, f.axes, origin, s.projected);
+    out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), f.axes, origin);
+    if (n <= static_cast<std::size_t>(config.leaf_size)) return out;
+    out.leaf = false;
+
+    // Candidate planes through the split position, across e1, e2, e3 (min-sa) or e1 only. The
+    // cost of a candidate is SA(L) + SA(R) of the RSSs fitted to the two subsets in the node's
+    // frame, from the projections already made for the node's own RSS.
+    const Vec3 split = f.axes.transpose() * (f.split_point - origin);
+    const int candidates = config.split == SplitRule::min_sa ? 3 : 1;
+    double best_cost = std::numeric_limits<double>::infinity();
+    int best = -1;
+    for (int a = 0; a < candidates; ++a) {
+      std::vector<std::uint8_t>& side = s.side[a];
+      side.resize(n);
+      std::size_t left = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        const double c = (s.projected[3 * j][a] + s.projected[3 * j + 1][a] + s.projected[3 * j + 2][a]) / 3.0;
+        const bool right = c - split[a] >= 0.0;
+        side[j] = right ? 1 : 0;
+        left += right ? 0 : 1;
+      }
+      if (left == 0 || left == n) continue;  // leaves one side empty: not a candidate
+      bool repeat = false;  // the same partition as an earlier axis costs the same
+      for (int b = 0; b < a && !repeat; ++b)
+        repeat = s.side[b].size() == n && std::memcmp(side.data(), s.side[b].data(), n) == 0;
+      if (repeat) continue;
+      if (candidates == 1) {
+        best = a;
+        break;
+      }
+      s.sides[0].clear();
+      s.sides[1].clear();
+      for (std::size_t j = 0; j < n; ++j) {
+        auto& dst = s.sides[side[j]];
+        dst.push_back(s.projected[3 * j]);
+        dst.push_back(s.projected[3 * j + 1]);
+        dst.push_back(s.projected[3 * j + 2]);
+      }
+      double cost = 0.0;
+      for (int k = 0; k < 2; ++k) {
+        const auto e = detail::rss_extents(s.sides[k].data(), s.sides[k].size());
+        const double w = e.xhi - e.xlo, h = e.yhi - e.ylo;
+        cost += 2.0 * w * h + 2.0 * std::numbers::pi * (w + h) * e.r + 4.0 * std::numbers::pi * e.r * e.r;
+      }
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = a;
+      }
+    }
+    if (best >= 0) {
+      out.middle = apply(node, s.side[best], s);
+      return out;
+    }
+    // Every axis leaves a side empty (e.g. coincident centroids): split at the median of the
+    // projections on e1, ties broken by input index.
+    const Vec3 e1 = f.axes.col(0);
+    auto first = ids.begin() + node.begin, last = ids.begin() + node.end;
+    const std::size_t half = n / 2;
+    std::nth_element(first, first + half, last, [&](std::uint32_t x, std::uint32_t y) {
+      const double px = info[x].m.dot(e1), py = info[y].m.dot(e1);
+      return px < py || (px == py && x < y);
+    });
+    std::sort(first, first + half);
+    std::sort(first + half, last);
+    out.middle = node.begin + static_cast<std::uint32_t>(half);
+    return out;
+  }
+};
+
+}  // namespace
+
+Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& config) {
+  if (triangles.empty()) return Error{"cannot build a tree of an empty mesh (0 triangles)"};
+  if (triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 2))
+    return Error{"mesh too large: " + std::to_string(triangles.size()) + " triangles"};
+  if (config.leaf_size < 1)
+    return Error{"leaf size must be at least 1 (got " + std::to_string(config.leaf_size) + ")"};
+  Aabb box;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const Triangle& t = triangles[i];
+    if (!(t.p.allFinite() && t.q.allFinite() && t.r.allFinite()))
+      return Error{"triangle " + std::to_string(i) + " has a NaN or infinite coordinate"};
+    box.extend(t.p);
+    box.extend(t.q);
+    box.extend(t.r);
+  }
+  const Vec3 offset = box.center();
+  const std::size_t n = triangles.size();
+  std::vector<Triangle> local(n);
+  std::vector<TriInfo> info(n);
+  auto prepare = [&](std::size_t i) {
+    const Triangle& t = triangles[i];
+    local[i] = Triangle{t.p - offset, t.q - offset, t.r - offset};
+    info[i] = detail::make_tri_info(local[i]);
+  };
+  if (config.parallel) {
+    tbb::parallel_for(std::size_t{0}, n, prepare);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) prepare(i);
+  }
+  std::vector<std::uint32_t> ids(n);
+  std::iota(ids.begin(), ids.end(), 0u);
+
+  Builder builder{config, local, info, ids, {}};
+  Bvh bvh;
+  bvh.config = config;
+  bvh.extent = box.extent();
+  bvh.nodes.reserve(2 * n / static_cast<std::size_t>(config.leaf_size) + 1);
+
+  std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
+  bvh.nodes.emplace_back();
+  std::vector<Outcome> outcomes;
+  while (!level.empty()) {
+    ++bvh.depth;
+    outcomes.assign(level.size(), Outcome{});
+    if (config.parallel && level.size() > 1) {
+      tbb::parallel_for(std::size_t{0}, level.size(),
+                        [&](std::size_t i) { outcomes[i] = builder.process(level[i]); });
+    } else {
+      for (std::size_t i = 0; i < level.size(); ++i) outcomes[i] = builder.process(level[i]);
+    }
+    // Children are numbered serially, in level order: the same tree at any thread count.
+    std::vector<Pending> next;
+    for (std::size_t i = 0; i < level.size(); ++i) {
+      const Pending& p = level[i];
+      const Outcome& o = outcomes[i];
+      Node& node = bvh.nodes[static_cast<std::size_t>(p.node)];
+      node.bv = o.rss;
+      node.bv.center += offset;
+      if (o.leaf) {
+        node.first = static_cast<std::int32_t>(p.begin);
+        node.count = static_cast<std::int32_t>(p.end - p.begin);
+        continue;
+      }
+      const auto child = static_cast<std::int32_t>(bvh.nodes.size());
+      node.first = child;
+      node.count = 0;
+      bvh.nodes.emplace_back();
+      bvh.nodes.emplace_back();
+      next.push_back({child, p.begin, o.middle});
+      next.push_back({child + 1, o.middle, p.end});
+    }
+    level = std::move(next);
+  }
+
+  bvh.triangles.resize(n);
+  bvh.triangle_ids = ids;
+  for (std::size_t i = 0; i < n; ++i) bvh.triangles[i] = triangles[ids[i]];
+  bvh.nodes.shrink_to_fit();
+  return bvh;
+}
+
+}  // namespace swept

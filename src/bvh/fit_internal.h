@@ -1,0 +1,56 @@
+#pragma once
+// Internal building blocks of the fitters and the builder. Everything here works in a local
+// frame (the model's bounding-box centre at the origin) so that a model far from the origin is
+// fitted exactly like the same model near it.
+#include "swept/bvh/fitter.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace swept::detail {
+
+/// Per-triangle data computed once per build: centroid m, area A, the vertices' scatter about
+/// their own centroid S = Σ_v (v − m)(v − m)ᵀ (so that any fitter's matrix is a sum of
+/// 3(m − c)(m − c)ᵀ and S terms: exact algebra, no cancellation), and a float bounding box used
+/// only for the degeneracy threshold.
+struct TriInfo {
+  Vec3 m;
+  double area;
+  double s[6];  // xx xy xz yy yz zz
+  float lo[3];
+  float hi[3];
+};
+
+TriInfo make_tri_info(const Triangle& local);
+
+/// ε = 1e-12 · L² for a box diagonal L (SPEC §2.1: scale-aware degeneracy threshold).
+inline double epsilon_for_extent(double extent) { return 1e-12 * extent * extent; }
+
+/// Fitter over the triangles `ids` (indices into `info`).
+Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter fitter);
+
+/// RSS fit (SPEC §2.3) over the vertices of the triangles `ids` of `tris` (local frame), with
+/// frame `axes`; `scratch` is reused storage for the projected vertices.
+Rss fit_rss_ids(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
+                std::vector<Vec3>& scratch);
+
+/// An RSS in its own frame: rectangle [xlo, xhi] × [ylo, yhi] at height zc, radius r.
+struct RectExtents {
+  double xlo = 0, xhi = 0, ylo = 0, yhi = 0, zc = 0, r = 0;
+};
+
+/// The smallest RSS (in the frame the points are given in) containing the points (SPEC §2.3).
+RectExtents rss_extents(const Vec3* points, std::size_t count);
+
+/// The RSS of extents given in the frame `axes` with origin `origin`.
+Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin);
+
+/// Projects the vertices of triangles `ids` onto `axes`, relative to `origin`: 3 per triangle.
+void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
+                      const Vec3& origin, std::vector<Vec3>& out);
+
+/// Eigenvectors of a symmetric 3×3 matrix as columns, sorted by decreasing eigenvalue,
+/// right-handed (third = first × second).
+void sorted_eigen(const Mat3& m, Mat3& axes, Vec3& values);
+
+}  // namespace swept::detail

@@ -1,0 +1,332 @@
+// The three fitters of the paper (SPEC §2.1) and the RSS fit (SPEC §2.3).
+//
+// Every fitter's matrix is written as a sum over triangles of  k·(m_i − c)(m_i − c)ᵀ + S_i
+// (m_i the centroid, S_i the triangle's own vertex scatter, c the split position): this is
+// algebraically the paper's formula and needs no subtraction of large nearly-equal numbers.
+//   PQP_FIT     C  = 1/(3n) Σ [3(m_i − µ)(m_i − µ)ᵀ + S_i]                       (eq. 1–2)
+//   RAPID2_FIT  C' = Σ A_i (m_i − m_H)(m_i − m_H)ᵀ + Σ (A_i/12) S_i               (eq. 5–9)
+//   INERTIA_FIT I  = 1/(3n) Σ (A_i/A_min) [3(m_i − CM)(m_i − CM)ᵀ + S_i]          (eq. 10)
+#include "fit_internal.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace swept::detail {
+
+TriInfo make_tri_info(const Triangle& t) {
+  TriInfo info{};
+  info.m = (t.p + t.q + t.r) / 3.0;
+  info.area = 0.5 * (t.p - t.q).cross(t.p - t.r).norm();
+  const Vec3 a = t.p - info.m, b = t.q - info.m, c = t.r - info.m;
+  info.s[0] = a.x() * a.x() + b.x() * b.x() + c.x() * c.x();
+  info.s[1] = a.x() * a.y() + b.x() * b.y() + c.x() * c.y();
+  info.s[2] = a.x() * a.z() + b.x() * b.z() + c.x() * c.z();
+  info.s[3] = a.y() * a.y() + b.y() * b.y() + c.y() * c.y();
+  info.s[4] = a.y() * a.z() + b.y() * b.z() + c.y() * c.z();
+  info.s[5] = a.z() * a.z() + b.z() * b.z() + c.z() * c.z();
+  for (int k = 0; k < 3; ++k) {
+    const double lo = std::min({t.p[k], t.q[k], t.r[k]});
+    const double hi = std::max({t.p[k], t.q[k], t.r[k]});
+    // Round outwards so the float box contains the double one.
+    info.lo[k] = std::nextafter(static_cast<float>(lo), -std::numeric_limits<float>::infinity());
+    info.hi[k] = std::nextafter(static_cast<float>(hi), std::numeric_limits<float>::infinity());
+  }
+  return info;
+}
+
+void sorted_eigen(const Mat3& m, Mat3& axes, Vec3& values) {
+  // The iterative (QL) solver: accurate also for nearly repeated eigenvalues, where the
+  // closed-form one loses digits.
+  Eigen::SelfAdjointEigenSolver<Mat3> solver(m, Eigen::ComputeEigenvectors);
+  const Vec3 ev = solver.eigenvalues();  // ascending
+  const Mat3 vec = solver.eigenvectors();
+  values = Vec3(ev[2], ev[1], ev[0]);
+  Vec3 e1 = vec.col(2), e2 = vec.col(1);
+  if (!(e1.allFinite() && e2.allFinite()) || solver.info() != Eigen::Success) {
+    axes = Mat3::Identity();
+    values = Vec3::Zero();
+    return;
+  }
+  // Deterministic sign convention: the largest component of e1 and e2 is positive.
+  Eigen::Index i;
+  e1.cwiseAbs().maxCoeff(&i);
+  if (e1[i] < 0) e1 = -e1;
+  e2 = (e2 - e2.dot(e1) * e1).normalized();
+  e2.cwiseAbs().maxCoeff(&i);
+  if (e2[i] < 0) e2 = -e2;
+  axes.col(0) = e1;
+  axes.col(1) = e2;
+  axes.col(2) = e1.cross(e2).normalized();
+}
+
+namespace {
+
+struct Sums {
+  std::size_t n = 0;
+  Vec3 sum_m = Vec3::Zero();
+  double sum_a = 0.0;
+  Vec3 sum_am = Vec3::Zero();
+  double max_a = 0.0;
+  float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+                 std::numeric_limits<float>::infinity()};
+  float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                 -std::numeric_limits<float>::infinity()};
+};
+
+double box_extent(const float lo[3], const float hi[3]) {
+  double s = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double d = static_cast<double>(hi[k]) - static_cast<double>(lo[k]);
+    if (d > 0) s += d * d;
+  }
+  return std::sqrt(s);
+}
+
+}  // namespace
+
+Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter fitter) {
+  Fit out;
+  if (n == 0) return out;
+  // Pass 1: means, total area and the box (for ε).
+  Sums s;
+  s.n = n;
+  for (std::size_t j = 0; j < n; ++j) {
+    const TriInfo& t = info[ids[j]];
+    s.sum_m += t.m;
+    s.sum_a += t.area;
+    s.sum_am += t.area * t.m;
+    s.max_a = std::max(s.max_a, t.area);
+    for (int k = 0; k < 3; ++k) {
+      s.lo[k] = std::min(s.lo[k], t.lo[k]);
+      s.hi[k] = std::max(s.hi[k], t.hi[k]);
+    }
+  }
+  const double eps = epsilon_for_extent(box_extent(s.lo, s.hi));
+  Fitter used = fitter;
+  if (fitter != Fitter::pqp && !(s.sum_a >= eps && s.sum_a > 0.0)) {
+    used = Fitter::pqp;
+    out.fell_back = true;
+  }
+  double a_min = 0.0;
+  if (used == Fitter::inertia) {
+    // A_min: the smallest area that is ≥ ε (smaller, degenerate triangles do not lower it).
+    a_min = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < n; ++j) {
+      const double a = info[ids[j]].area;
+      if (a >= eps && a < a_min) a_min = a;
+    }
+    if (!std::isfinite(a_min)) a_min = s.max_a;  // every triangle below ε, but their sum is not
+  }
+
+  Vec3 c;
+  double k_center, k_scatter, scale;
+  switch (used) {
+    case Fitter::pqp:
+      c = s.sum_m / static_cast<double>(n);
+      k_center = 3.0, k_scatter = 1.0, scale = 1.0 / (3.0 * static_cast<double>(n));
+      break;
+    case Fitter::rapid2:
+      c = s.sum_am / s.sum_a;
+      k_center = 1.0, k_scatter = 1.0 / 12.0, scale = 1.0;
+      break;
+    case Fitter::inertia:
+    default:
+      c = s.sum_am / s.sum_a;
+      k_center = 3.0, k_scatter = 1.0, scale = 1.0 / (3.0 * static_cast<double>(n));
+      break;
+  }
+
+  // Pass 2: the matrix, six unique entries.
+  double acc[6] = {0, 0, 0, 0, 0, 0};
+  for (std::size_t j = 0; j < n; ++j) {
+    const TriInfo& t = info[ids[j]];
+    double w;
+    switch (used) {
+      case Fitter::pqp: w = 1.0; break;
+      case Fitter::rapid2: w = t.area; break;
+      default: w = t.area / a_min; break;
+    }
+    const Vec3 d = t.m - c;
+    const double wc = w * k_center, ws = w * k_scatter;
+    acc[0] += wc * d.x() * d.x() + ws * t.s[0];
+    acc[1] += wc * d.x() * d.y() + ws * t.s[1];
+    acc[2] += wc * d.x() * d.z() + ws * t.s[2];
+    acc[3] += wc * d.y() * d.y() + ws * t.s[3];
+    acc[4] += wc * d.y() * d.z() + ws * t.s[4];
+    acc[5] += wc * d.z() * d.z() + ws * t.s[5];
+  }
+  Mat3 m;
+  m << acc[0], acc[1], acc[2], acc[1], acc[3], acc[4], acc[2], acc[4], acc[5];
+  m *= scale;
+  out.split_point = c;
+  sorted_eigen(m, out.axes, out.eigenvalues);
+  return out;
+}
+
+RectExtents rss_extents(const Vec3* pts, std::size_t count) {
+  RectExtents e;
+  if (count == 0) return e;
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
+  for (std::size_t j = 0; j < count; ++j) {
+    zmin = std::min(zmin, pts[j].z());
+    zmax = std::max(zmax, pts[j].z());
+  }
+  const double r = 0.5 * (zmax - zmin);
+  const double zc = 0.5 * (zmax + zmin);
+  const double r2 = r * r;
+  auto in_plane_radius = [&](const Vec3& p) {
+    const double dz = p.z() - zc;
+    return std::sqrt(std::max(r2 - dz * dz, 0.0));
+  };
+
+  // The tightest edges ignoring the rounded corners: each vertex may stick out of an edge by at
+  // most its in-plane radius ρ.
+  double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
+  for (std::size_t j = 0; j < count; ++j) {
+    const Vec3& p = pts[j];
+    const double rho = in_plane_radius(p);
+    xlo = std::min(xlo, p.x() + rho);
+    xhi = std::max(xhi, p.x() - rho);
+    ylo = std::min(ylo, p.y() + rho);
+    yhi = std::max(yhi, p.y() - rho);
+  }
+  if (xlo > xhi) xlo = xhi = 0.5 * (xlo + xhi);
+  if (ylo > yhi) ylo = yhi = 0.5 * (ylo + yhi);
+
+  // Corners: a vertex outside both an x and a y edge must be within ρ of the corner; if not,
+  // push one edge outwards (the cheaper in area) just enough. Edges only ever move outwards, so
+  // earlier vertices stay inside.
+  for (std::size_t j = 0; j < count; ++j) {
+    const Vec3& p = pts[j];
+    const double dx = std::max({xlo - p.x(), p.x() - xhi, 0.0});
+    const double dy = std::max({ylo - p.y(), p.y() - yhi, 0.0});
+    if (dx == 0.0 || dy == 0.0) continue;  // beside an edge: inside by the first pass
+    const double rho = in_plane_radius(p);
+    if (dx * dx + dy * dy <= rho * rho) continue;
+    const double w = xhi - xlo, h = yhi - ylo;
+    // Either edge alone can take the vertex (the first pass keeps dx, dy ≤ ρ up to rounding).
+    const double need_x = dx - std::sqrt(std::max(rho * rho - dy * dy, 0.0));
+    const double need_y = dy - std::sqrt(std::max(rho * rho - dx * dx, 0.0));
+    if (dy <= rho && (dx > rho || need_x * h <= need_y * w)) {
+      const double allowed = std::sqrt(std::max(rho * rho - dy * dy, 0.0));
+      if (p.x() < xlo) xlo = p.x() + allowed;
+      else xhi = p.x() - allowed;
+    } else if (dx <= rho) {
+      const double allowed = std::sqrt(std::max(rho * rho - dx * dx, 0.0));
+      if (p.y() < ylo) ylo = p.y() + allowed;
+      else yhi = p.y() - allowed;
+    } else {  // rounding pushed both beyond ρ: take the vertex's x in, then y to within ρ
+      if (p.x() < xlo) xlo = p.x();
+      else xhi = p.x();
+      if (p.y() < ylo) ylo = p.y() + rho;
+      else yhi = p.y() - rho;
+    }
+  }
+  e.xlo = xlo, e.xhi = xhi, e.ylo = ylo, e.yhi = yhi, e.zc = zc, e.r = r;
+  return e;
+}
+
+Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
+  Rss rss;
+  rss.axes = axes;
+  const Vec3 local_center(0.5 * (e.xlo + e.xhi), 0.5 * (e.ylo + e.yhi), e.zc);
+  rss.center = origin + axes * local_center;
+  rss.half_length = {0.5 * (e.xhi - e.xlo), 0.5 * (e.yhi - e.ylo)};
+  // A hair of slack for the rounding of the projections: 4 ulps of the set's extent.
+  const double extent = std::max({e.xhi - e.xlo, e.yhi - e.ylo, 2.0 * e.r});
+  rss.radius = e.r + 4.0 * std::numeric_limits<double>::epsilon() * (extent + std::abs(e.zc));
+  // The long side first.
+  if (rss.half_length[1] > rss.half_length[0]) {
+    std::swap(rss.half_length[0], rss.half_length[1]);
+    const Vec3 e1 = rss.axes.col(1), e2 = rss.axes.col(0);
+    rss.axes.col(0) = e1;
+    rss.axes.col(1) = e2;
+    rss.axes.col(2) = -rss.axes.col(2);  // keep it right-handed
+  }
+  return rss;
+}
+
+void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
+                      const Vec3& origin, std::vector<Vec3>& out) {
+  const Mat3 at = axes.transpose();
+  out.resize(3 * n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Triangle& t = tris[ids[j]];
+    out[3 * j] = at * (t.p - origin);
+    out[3 * j + 1] = at * (t.q - origin);
+    out[3 * j + 2] = at * (t.r - origin);
+  }
+}
+
+Rss fit_rss_ids(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
+                std::vector<Vec3>& scratch) {
+  if (n == 0) return Rss{axes};
+  // Projected relative to a vertex of the set, for precision.
+  const Vec3 origin = tris[ids[0]].p;
+  project_vertices(tris, ids, n, axes, origin, scratch);
+  return make_rss(rss_extents(scratch.data(), scratch.size()), axes, origin);
+}
+
+}  // namespace swept::detail
+
+namespace swept {
+
+double degeneracy_epsilon(std::span<const Triangle> triangles) {
+  Aabb box;
+  for (const Triangle& t : triangles) {
+    box.extend(t.p);
+    box.extend(t.q);
+    box.extend(t.r);
+  }
+  return detail::epsilon_for_extent(box.extent());
+}
+
+namespace {
+// A local frame for fitting: centre of the bounding box at the origin.
+std::vector<Triangle> localised(std::span<const Triangle> triangles, Vec3& offset) {
+  Aabb box;
+  for (const Triangle& t : triangles) {
+    box.extend(t.p);
+    box.extend(t.q);
+    box.extend(t.r);
+  }
+  offset = box.empty() ? Vec3::Zero() : box.center();
+  std::vector<Triangle> out(triangles.begin(), triangles.end());
+  for (Triangle& t : out) {
+    t.p -= offset;
+    t.q -= offset;
+    t.r -= offset;
+  }
+  return out;
+}
+}  // namespace
+
+Fit fit(std::span<const Triangle> triangles, Fitter fitter) {
+  Vec3 offset;
+  const std::vector<Triangle> local = localised(triangles, offset);
+  std::vector<detail::TriInfo> info;
+  info.reserve(local.size());
+  for (const Triangle& t : local) info.push_back(detail::make_tri_info(t));
+  std::vector<std::uint32_t> ids(local.size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  Fit f = detail::fit_ids(info.data(), ids.data(), ids.size(), fitter);
+  f.split_point += offset;
+  return f;
+}
+
+Rss fit_rss(std::span<const Triangle> triangles, const Mat3& axes) {
+  Vec3 offset;
+  const std::vector<Triangle> local = localised(triangles, offset);
+  std::vector<std::uint32_t> ids(local.size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  std::vector<Vec3> scratch;
+  Rss rss = detail::fit_rss_ids(local.data(), ids.data(), ids.size(), axes, scratch);
+  rss.center += offset;
+  return rss;
+}
+
+}  // namespace swept

@@ -1,0 +1,38 @@
+#include "swept/geometry/types.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace swept {
+
+double area(const Triangle& t) { return 0.5 * (t.p - t.q).cross(t.p - t.r).norm(); }
+
+Vec3 centroid(const Triangle& t) { return (t.p + t.q + t.r) / 3.0; }
+
+double shape_quality(const Triangle& t) {
+  const double l2 = std::max({(t.q - t.p).squaredNorm(), (t.r - t.q).squaredNorm(),
+                              (t.p - t.r).squaredNorm()});
+  if (l2 == 0.0) return 0.0;
+  return 2.0 * area(t) / l2;
+}
+
+double aspect_ratio(const Triangle& t) {
+  const double l = std::sqrt(std::max({(t.q - t.p).squaredNorm(), (t.r - t.q).squaredNorm(),
+                                       (t.p - t.r).squaredNorm()}));
+  const double a = area(t);
+  if (a <= 0.0) return std::numeric_limits<double>::infinity();
+  const double h = 2.0 * a / l;  // smallest height is the one onto the longest edge
+  return l / h;
+}
+
+Aabb bounds(const std::vector<Triangle>& triangles) {
+  Aabb box;
+  for (const Triangle& t : triangles) {
+    box.extend(t.p);
+    box.extend(t.q);
+    box.extend(t.r);
+  }
+  return box;
+}
+
+}  // namespace swept

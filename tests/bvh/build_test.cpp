@@ -1,0 +1,206 @@
+// The RSS tree: containment invariant, determinism across thread counts, structure.
+#include "support/test_support.h"
+#include "swept/bvh/bvh.h"
+#include "swept/bvh/fitter.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cstring>
+#include <functional>
+#include <numbers>
+
+namespace swept {
+namespace {
+
+using test::Rng;
+
+const Fitter kFitters[] = {Fitter::pqp, Fitter::rapid2, Fitter::inertia};
+const SplitRule kSplits[] = {SplitRule::min_sa, SplitRule::largest};
+
+// Triangle range [begin, end) of every node (leaves' ranges are stored; internal nodes cover
+// their children's adjacent ranges).
+std::vector<std::pair<int, int>> node_ranges(const Bvh& bvh) {
+  std::vector<std::pair<int, int>> range(bvh.nodes.size());
+  std::function<std::pair<int, int>(int)> walk = [&](int i) {
+    const Node& n = bvh.nodes[i];
+    if (n.is_leaf()) return range[i] = {n.first, n.first + n.count};
+    auto l = walk(n.first), r = walk(n.first + 1);
+    EXPECT_EQ(l.second, r.first) << "children's triangles are not adjacent";
+    return range[i] = {l.first, r.second};
+  };
+  walk(0);
+  return range;
+}
+
+// Every vertex of every triangle lies in the RSS of its leaf and of every ancestor.
+void expect_containment(const Bvh& bvh, const std::string& what) {
+  const double tol = 1e-9 * bvh.extent;
+  const auto range = node_ranges(bvh);
+  std::size_t bad = 0;
+  double worst = -1e300;
+  for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+    for (int t = range[i].first; t < range[i].second; ++t)
+      for (int v = 0; v < 3; ++v) {
+        const double d = signed_distance(bvh.nodes[i].bv, bvh.triangles[t][v]);
+        worst = std::max(worst, d);
+        if (d > tol) ++bad;
+      }
+  }
+  EXPECT_EQ(bad, 0u) << what << ": worst excess " << worst << " (tolerance " << tol << ")";
+}
+
+void expect_structure(const Bvh& bvh, std::size_t n, int leaf_size) {
+  ASSERT_FALSE(bvh.empty());
+  std::size_t in_leaves = 0;
+  for (const Node& node : bvh.nodes) {
+    if (node.is_leaf()) {
+      in_leaves += static_cast<std::size_t>(node.count);
+      EXPECT_LE(node.count, leaf_size);
+    } else {
+      EXPECT_GT(node.first, 0);
+      EXPECT_LT(static_cast<std::size_t>(node.first + 1), bvh.nodes.size());
+    }
+  }
+  EXPECT_EQ(in_leaves, n);
+  std::vector<std::uint32_t> ids = bvh.triangle_ids;
+  std::sort(ids.begin(), ids.end());
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i);
+  if (leaf_size == 1) EXPECT_EQ(bvh.nodes.size(), 2 * n - 1);
+}
+
+TEST(BuildBvh, ContainmentOnSliversAndDegenerates) {
+  Rng rng(2024);
+  auto tris = test::nasty_triangles(rng, 3000, 100.0);
+  auto more = test::random_triangles(rng, 1000, 100.0, 20.0);
+  tris.insert(tris.end(), more.begin(), more.end());
+  for (Fitter f : kFitters)
+    for (SplitRule s : kSplits) {
+      auto bvh = build_bvh(tris, {.fitter = f, .split = s});
+      ASSERT_TRUE(bvh) << bvh.error().message;
+      expect_structure(*bvh, tris.size(), 1);
+      expect_containment(*bvh, std::string(to_string(f)) + "/" + std::string(to_string(s)));
+    }
+}
+
+TEST(BuildBvh, ContainmentFarFromOriginAndLeafSize) {
+  Rng rng(5);
+  auto tris = test::transformed(test::nasty_triangles(rng, 1500, 10.0), {rng.rotation(), Vec3(1e6, 2e6, -1e6)});
+  for (int leaf : {1, 4}) {
+    for (Fitter f : kFitters) {
+      auto bvh = build_bvh(tris, {.fitter = f, .leaf_size = leaf});
+      ASSERT_TRUE(bvh);
+      expect_structure(*bvh, tris.size(), leaf);
+      expect_containment(*bvh, std::string(to_string(f)) + " leaf " + std::to_string(leaf));
+    }
+  }
+}
+
+TEST(BuildBvh, SlenderSliversOfAspect1e4) {
+  // A fan of long thin triangles of aspect ratio 1e4, the shape CAD exports of cylinders have.
+  std::vector<Triangle> fan;
+  for (int i = 0; i < 500; ++i) {
+    const double a = 2 * std::numbers::pi * i / 500.0, b = 2 * std::numbers::pi * (i + 1) / 500.0;
+    const Vec3 p(std::cos(a), std::sin(a), 0), q(std::cos(b), std::sin(b), 0);
+    fan.push_back({p, q, p + Vec3(0, 0, 1e2 * (q - p).norm() * 100)});
+  }
+  for (Fitter f : kFitters)
+    for (SplitRule s : kSplits) {
+      auto bvh = build_bvh(fan, {.fitter = f, .split = s});
+      ASSERT_TRUE(bvh);
+      expect_containment(*bvh, "fan");
+    }
+}
+
+TEST(BuildBvh, CoincidentCentroidsSplitAtTheMedian) {
+  // Duplicated faces (as CAD exports have): every candidate plane leaves a side empty.
+  const std::vector<Triangle> dup(64, Triangle{Vec3(0.1, 0.2, 0.3), Vec3(1.7, 0.2, 0.3), Vec3(0.4, 1.9, 0.3)});
+  for (Fitter f : kFitters) {
+    auto bvh = build_bvh(dup, {.fitter = f});
+    ASSERT_TRUE(bvh);
+    expect_structure(*bvh, dup.size(), 1);
+    expect_containment(*bvh, "duplicates");
+    EXPECT_EQ(bvh->depth, 7);  // balanced: log2 64 + 1 levels
+  }
+}
+
+TEST(BuildBvh, NearlyCoincidentCentroids) {
+  // Triangles rotated about a common centroid: centroids agree up to rounding.
+  std::vector<Triangle> star;
+  for (int i = 0; i < 64; ++i) {
+    const Mat3 r = Eigen::AngleAxisd(0.1 * i, Vec3(0.3, 0.5, 0.8).normalized()).toRotationMatrix();
+    star.push_back({r * Vec3(1, 0, 0), r * Vec3(-0.5, 0.8660254037844386, 0), r * Vec3(-0.5, -0.8660254037844386, 0)});
+  }
+  for (Fitter f : kFitters) {
+    auto bvh = build_bvh(star, {.fitter = f});
+    ASSERT_TRUE(bvh);
+    expect_structure(*bvh, star.size(), 1);
+    expect_containment(*bvh, "star");
+  }
+}
+
+TEST(BuildBvh, ParallelEqualsSerialNodeForNode) {
+  Rng rng(99);
+  auto tris = test::nasty_triangles(rng, 20000, 50.0);
+  auto more = test::random_triangles(rng, 20000, 50.0, 2.0);
+  tris.insert(tris.end(), more.begin(), more.end());
+  for (Fitter f : kFitters) {
+    auto serial = build_bvh(tris, {.fitter = f, .parallel = false});
+    Result<Bvh> parallel = Error{};
+    {
+      tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+      parallel = build_bvh(tris, {.fitter = f, .parallel = true});
+    }
+    ASSERT_TRUE(serial && parallel);
+    ASSERT_EQ(serial->nodes.size(), parallel->nodes.size());
+    EXPECT_EQ(std::memcmp(serial->nodes.data(), parallel->nodes.data(), serial->nodes.size() * sizeof(Node)), 0)
+        << to_string(f);
+    EXPECT_EQ(serial->triangle_ids, parallel->triangle_ids);
+    EXPECT_EQ(serial->depth, parallel->depth);
+  }
+}
+
+TEST(BuildBvh, RejectsBadInput) {
+  EXPECT_FALSE(build_bvh(std::vector<Triangle>{}));
+  std::vector<Triangle> tris{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+                             {Vec3(0, 0, 0), Vec3(1, std::nan(""), 0), Vec3(0, 1, 0)}};
+  auto r = build_bvh(tris);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("triangle 1"), std::string::npos) << r.error().message;
+  tris[1].q.y() = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(build_bvh(tris));
+  EXPECT_FALSE(build_bvh(std::vector<Triangle>(1), {.leaf_size = 0}));
+}
+
+TEST(BuildBvh, SingleTriangleAndAllDegenerate) {
+  auto one = build_bvh(std::vector<Triangle>{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}});
+  ASSERT_TRUE(one);
+  EXPECT_EQ(one->nodes.size(), 1u);
+  EXPECT_EQ(one->depth, 1);
+  std::vector<Triangle> points(10, Triangle{Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(1, 2, 3)});
+  for (Fitter f : kFitters) {
+    auto b = build_bvh(points, {.fitter = f});
+    ASSERT_TRUE(b);
+    expect_containment(*b, "points");
+    for (const Node& n : b->nodes) EXPECT_TRUE(n.bv.axes.allFinite() && std::isfinite(n.bv.radius));
+  }
+}
+
+TEST(BuildBvh, StatsAddUp) {
+  auto cube = test::box_triangles(Vec3(0, 0, 0), Vec3(1, 2, 3));
+  auto bvh = build_bvh(cube);
+  ASSERT_TRUE(bvh);
+  const BvhStats s = stats(*bvh);
+  EXPECT_EQ(s.triangles, 12u);
+  EXPECT_EQ(s.nodes, 23u);
+  double sa = 0;
+  for (const Node& n : bvh->nodes) sa += surface_area(n.bv);
+  EXPECT_DOUBLE_EQ(s.total_surface_area, sa);
+  EXPECT_GT(s.total_volume, 0.0);
+  EXPECT_GE(s.bytes, 23 * sizeof(Node) + 12 * sizeof(Triangle));
+  // The root RSS holds the whole box: its SA is at least the box's.
+  EXPECT_GE(surface_area(bvh->nodes[0].bv), 2 * (2 + 3 + 6) - 1e-9);
+}
+
+}  // namespace
+}  // namespace swept
