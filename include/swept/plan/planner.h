@@ -1,0 +1,95 @@
+#pragma once
+/// The deterministic, certified 6-DOF disassembly planner (SPEC §4; paper §II).
+///
+/// Configurations are poses of the body frame. The motion between two configurations moves the
+/// body's reference point c linearly and slerps the rotation about it; the metric
+/// d(q0, q1) = ‖Δc‖ + r_max·θ bounds how far any body point moves (r_max: the body's radius
+/// about c). Every edge of a returned path is certified by the motion-clearance query
+/// (Schwarzer, Saha, Latombe 2005): the distance stays ≥ the clearance margin along the whole
+/// continuous motion.
+#include "swept/bvh/bvh.h"
+#include "swept/plan/problem.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace swept {
+
+/// The problem's meshes loaded and merged (obstacles in the world, body in the body frame),
+/// with their RSS trees.
+struct PlanScene {
+  TriangleSoup obstacles;  ///< world frame
+  TriangleSoup body;       ///< body frame
+  Bvh obstacle_tree;
+  Bvh body_tree;
+  Vec3 reference = Vec3::Zero();  ///< body-frame point the motions interpolate about
+  double radius = 0.0;            ///< max distance from `reference` to a body vertex
+  Aabb obstacle_box;              ///< world bounding box of the obstacles
+  double load_ms = 0.0;           ///< reading and tessellating the meshes
+  double build_ms = 0.0;          ///< building both trees
+};
+
+/// Imports every mesh of the problem (units, deflection, poses applied) and builds the trees
+/// with `fitter`. Errors name the mesh file.
+Result<PlanScene> load_scene(const Problem& problem, Fitter fitter);
+
+/// A scene from meshes already in memory (obstacles in the world, body in the body frame).
+Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, Fitter fitter,
+                             std::optional<Vec3> reference_point = std::nullopt);
+
+/// Reported while planning (about once a second) for the progress line.
+struct PlanProgress {
+  int level = 0;                ///< grid resolution level
+  std::size_t nodes_checked = 0;
+  std::uint64_t queries = 0;    ///< distance + tolerance + collide queries so far
+  double elapsed_s = 0.0;
+};
+
+/// Overrides of the problem's settings, and the progress callback.
+struct PlanOptions {
+  std::optional<double> time_limit;  ///< seconds
+  std::optional<int> threads;        ///< 0: all cores
+  std::function<void(const PlanProgress&)> progress;
+};
+
+enum class PlanStatus {
+  solved,
+  no_path_time,        ///< time limit reached
+  no_path_bounds,      ///< the search exhausted the bounds/rotation limits at every resolution
+  no_path_resolution,  ///< the finest resolution was searched without a path
+  invalid_start,       ///< start outside bounds or closer than the clearance (bad input)
+  invalid_goal,        ///< goal outside bounds or closer than the clearance (bad input)
+};
+
+struct PlanResult {
+  PlanStatus status = PlanStatus::no_path_resolution;
+  std::string message;  ///< what happened, in a sentence (which limit, for failures)
+  Path path;            ///< start … goal, every segment certified
+  double path_length = 0.0;         ///< Σ metric length ‖Δc‖ + r_max·θ
+  double translation_length = 0.0;  ///< Σ ‖Δc‖
+  double rotation_length = 0.0;     ///< Σ θ, radians
+  double min_clearance = 0.0;       ///< smallest distance found along the path (≥ the margin)
+  struct {
+    double build = 0, search = 0, smooth = 0, total = 0;
+  } time_ms;
+  struct {
+    std::uint64_t distance = 0, tolerance = 0, collide = 0;
+  } queries;
+  std::uint64_t path_hash = 0;  ///< FNV-1a over the poses' bytes: equal paths, equal hashes
+  int level = 0;                ///< the grid level the path was found at (-1: straight-line phase)
+  std::size_t nodes_checked = 0;
+  std::size_t edges_checked = 0;
+
+  bool solved() const { return status == PlanStatus::solved; }
+};
+
+/// Plans a certified path for the problem. Deterministic: the same problem and scene give the
+/// same path, bit for bit, at any thread count (while the time limit is not reached).
+PlanResult plan(const Problem& problem, const PlanScene& scene, const PlanOptions& options = {});
+
+/// FNV-1a 64 over the bytes of the poses (rotation, then translation, for each pose).
+std::uint64_t path_hash(const Path& path);
+
+}  // namespace swept

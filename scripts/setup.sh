@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages swept needs (as root via apt-get; otherwise prints the command),
+# the viewer's npm packages, and configures + builds the release preset.
+#   bash scripts/setup.sh            # packages + release build
+#   SWEPT_SKIP_BUILD=1 bash scripts/setup.sh   # packages only
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libeigen3-dev libtbb-dev libassimp-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
+  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libfcl-dev libompl-dev
+  chromium
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+# Node.js/npm build the viewer; Debian's npm only where npm is missing (it conflicts with others).
+command -v npm >/dev/null 2>&1 || missing+=(npm)
+if [ ${#missing[@]} -gt 0 ]; then
+  if [ "$(id -u)" = 0 ]; then
+    echo "setup: installing ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  else
+    echo "setup: please run as root:  apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+if [ -f viewer/package.json ] && [ ! -d viewer/node_modules ]; then
+  (cd viewer && npm ci --no-audit --no-fund --loglevel=error)
+fi
+
+if [ -z "${SWEPT_SKIP_BUILD:-}" ]; then
+  cmake --preset release >/dev/null
+  cmake --build --preset release -j"$(nproc)"
+fi

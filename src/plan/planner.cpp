@@ -1,0 +1,768 @@
+// The planner (SPEC §4): straight-line disassembly moves first, then lazy A* over a
+// multi-resolution grid of SE(3) anchored at the start, every edge certified by distance bounds,
+// then deterministic shortcut smoothing and a final certification of the whole path.
+//
+// Determinism: no randomness, no clocks or addresses in decisions, ordered containers where
+// order matters; work done in parallel (batches of node and edge checks) is the same set of work
+// at any thread count and its results are consumed in path order.
+#include "swept/plan/planner.h"
+
+#include "swept/bvh/fitter.h"
+#include "swept/geometry/distance.h"
+#include "swept/query/query.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <queue>
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+namespace swept {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Mat3 exp_rotation(const Vec3& w) {
+  const double angle = w.norm();
+  if (angle == 0.0) return Mat3::Identity();
+  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
+}
+
+// The RSS of a body node placed in the world.
+Rss placed(const Rss& v, const Pose& pose) {
+  Rss out = v;
+  out.axes = pose.rotation * v.axes;
+  out.center = pose.apply(v.center);
+  return out;
+}
+
+// Body and obstacle triangles closer than `threshold` to the other side at `pose` (dual
+// traversal of the two trees with RSS lower bounds, then exact triangle distances).
+void contact_sets(const PlanScene& s, const Pose& pose, double threshold, std::vector<char>& body_in,
+                  std::vector<char>& obstacle_in) {
+  body_in.assign(s.body.triangles.size(), 0);
+  obstacle_in.assign(s.obstacles.triangles.size(), 0);
+  const Bvh& a = s.obstacle_tree;
+  const Bvh& b = s.body_tree;
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  while (!stack.empty()) {
+    auto [i, j] = stack.back();
+    stack.pop_back();
+    const Node& na = a.nodes[static_cast<std::size_t>(i)];
+    const Node& nb = b.nodes[static_cast<std::size_t>(j)];
+    if (rss_distance(na.bv, placed(nb.bv, pose)) >= threshold) continue;
+    if (na.is_leaf() && nb.is_leaf()) {
+      for (int ta = na.first; ta < na.first + na.count; ++ta)
+        for (int tb = nb.first; tb < nb.first + nb.count; ++tb) {
+          const Triangle& tt = b.triangles[static_cast<std::size_t>(tb)];
+          const Triangle world{pose.apply(tt.p), pose.apply(tt.q), pose.apply(tt.r)};
+          if (triangle_distance(a.triangles[static_cast<std::size_t>(ta)], world).distance < threshold) {
+            obstacle_in[a.triangle_ids[static_cast<std::size_t>(ta)]] = 1;
+            body_in[b.triangle_ids[static_cast<std::size_t>(tb)]] = 1;
+          }
+        }
+      continue;
+    }
+    const bool split_a = !na.is_leaf() && (nb.is_leaf() || surface_area(na.bv) >= surface_area(nb.bv));
+    if (split_a) {
+      stack.push_back({na.first + 1, j});
+      stack.push_back({na.first, j});
+    } else {
+      stack.push_back({i, nb.first + 1});
+      stack.push_back({i, nb.first});
+    }
+  }
+}
+
+// Distance bounds and motion certificates against the obstacles, with query counters. In
+// `relaxed` mode (the escape from a start in contact) the pairs of triangles that were in
+// contact at the start are exempt: every other pair is checked.
+class Checker {
+ public:
+  Checker(const PlanScene& scene, double margin) : s_(scene), margin_(margin) {}
+
+  void set_contact_model(const std::vector<char>& body_in, const std::vector<char>& obstacle_in) {
+    auto reduced = [](const std::vector<Triangle>& all, const std::vector<char>& drop) {
+      std::vector<Triangle> keep;
+      for (std::size_t i = 0; i < all.size(); ++i)
+        if (!drop[i]) keep.push_back(all[i]);
+      return keep;
+    };
+    const auto rb = reduced(s_.body.triangles, body_in);
+    const auto ro = reduced(s_.obstacles.triangles, obstacle_in);
+    const BuildConfig config = s_.body_tree.config;
+    if (!rb.empty()) reduced_body_ = std::make_unique<Bvh>(std::move(*build_bvh(rb, config)));
+    if (!ro.empty()) reduced_obstacles_ = std::make_unique<Bvh>(std::move(*build_bvh(ro, config)));
+    relaxed_ready_ = true;
+  }
+
+  /// A lower bound on the distance at `pose`, exact below `enough`.
+  double clearance(const Pose& pose, double enough, bool relaxed = false) const {
+    const DistanceRequest req{.enough = enough};
+    if (!relaxed) {
+      ++distance_queries;
+      return distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, req).distance;
+    }
+    double d = std::numeric_limits<double>::infinity();
+    if (reduced_body_) {
+      ++distance_queries;
+      d = std::min(d, distance(s_.obstacle_tree, Pose{}, *reduced_body_, pose, req).distance);
+    }
+    if (reduced_obstacles_) {
+      ++distance_queries;
+      d = std::min(d, distance(*reduced_obstacles_, Pose{}, s_.body_tree, pose, req).distance);
+    }
+    return d;
+  }
+
+  /// Exact distance at `pose` (for reporting clearance).
+  double exact(const Pose& pose) const {
+    ++distance_queries;
+    return distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose).distance;
+  }
+
+  double length(const Pose& a, const Pose& b) const {
+    return motion_length(a, b, s_.reference, s_.radius);
+  }
+
+  /// Is the straight motion a → b free with distance > margin everywhere? `da`, `db` are known
+  /// lower bounds at the ends (negative: unknown). Schwarzer–Saha–Latombe bisection.
+  bool certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const {
+    struct Piece {
+      double t0, d0, t1, d1;
+    };
+    const double total = length(a, b);
+    if (total == 0.0) return true;
+    auto at = [&](double t) { return interpolate(a, b, t, s_.reference); };
+    if (da < 0) da = clearance(a, margin_ + total, relaxed);
+    if (db < 0) db = clearance(b, margin_ + total, relaxed);
+    if (da <= margin_ || db <= margin_) return false;
+    std::vector<Piece> stack{{0.0, da, 1.0, db}};
+    int queries = 0;
+    while (!stack.empty()) {
+      const Piece p = stack.back();
+      stack.pop_back();
+      const double len = total * (p.t1 - p.t0);
+      if (len < (p.d0 - margin_) + (p.d1 - margin_)) continue;
+      // The certificate needs this piece split: too many pieces means the motion grazes the
+      // margin; refuse rather than loop.
+      if (++queries > kMaxQueriesPerEdge || p.t1 - p.t0 < 1e-9) return false;
+      const double tm = 0.5 * (p.t0 + p.t1);
+      const double dm = clearance(at(tm), margin_ + 0.5 * len, relaxed);
+      if (dm <= margin_) return false;
+      stack.push_back({tm, dm, p.t1, p.d1});
+      stack.push_back({p.t0, p.d0, tm, dm});
+    }
+    return true;
+  }
+
+  double margin() const { return margin_; }
+  bool relaxed_ready() const { return relaxed_ready_; }
+
+  mutable std::atomic<std::uint64_t> distance_queries{0};
+  static constexpr int kMaxQueriesPerEdge = 200000;
+
+ private:
+  const PlanScene& s_;
+  double margin_;
+  std::unique_ptr<Bvh> reduced_body_, reduced_obstacles_;
+  bool relaxed_ready_ = false;
+};
+
+// ---- the grid ---------------------------------------------------------------------------------
+
+constexpr int kMaxDims = 6;
+using Key = std::array<std::int32_t, kMaxDims>;
+
+struct KeyHash {
+  std::size_t operator()(const Key& k) const {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (std::int32_t v : k) {
+      h ^= static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+struct EdgeKey {
+  Key a, b;
+  bool operator==(const EdgeKey&) const = default;
+};
+struct EdgeHash {
+  std::size_t operator()(const EdgeKey& e) const { return KeyHash{}(e.a) * 31u ^ KeyHash{}(e.b); }
+};
+
+const Key kGoalKey = {INT_MIN, INT_MIN, INT_MIN, INT_MIN, INT_MIN, INT_MIN};
+
+struct NodeInfo {
+  bool valid = false;
+  double distance = 0.0;
+};
+
+class Planner {
+ public:
+  Planner(const Problem& p, const PlanScene& s, const PlanOptions& o)
+      : pb_(p), sc_(s), opt_(o), check_(s, p.clearance), t_start_(Clock::now()) {
+    time_limit_ = o.time_limit.value_or(p.time_limit);
+    c_ = s.reference;
+    rmax_ = std::max(s.radius, 1e-12);
+  }
+
+  PlanResult run();
+
+ private:
+  // Reference point of a pose in the world.
+  Vec3 ref(const Pose& q) const { return q.apply(c_); }
+  Pose with_ref(const Mat3& rot, const Vec3& p) const { return {rot, p - rot * c_}; }
+  double elapsed_s() const { return std::chrono::duration<double>(Clock::now() - t_start_).count(); }
+  bool out_of_time() const { return elapsed_s() > time_limit_; }
+
+  bool in_bounds(const Vec3& p) const {
+    return (p.array() >= bounds_.min.array()).all() && (p.array() <= bounds_.max.array()).all();
+  }
+  bool in_goal_region(const Pose& q) const {
+    const Vec3 p = ref(q);
+    for (int i = 0; i < 3; ++i)
+      if (p[i] - rmax_ > goal_box_.max[i] || p[i] + rmax_ < goal_box_.min[i]) return true;
+    return false;
+  }
+  bool is_goal(const Pose& q) const { return pb_.goal_outside ? in_goal_region(q) : false; }
+  // Lower bound of the metric distance to the goal.
+  double heuristic(const Pose& q) const {
+    if (!pb_.goal_outside) return check_.length(q, *pb_.goal);
+    const Vec3 p = ref(q);
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      best = std::min(best, std::max(0.0, goal_box_.max[i] + rmax_ - p[i]));
+      best = std::min(best, std::max(0.0, p[i] - (goal_box_.min[i] - rmax_)));
+    }
+    return best;
+  }
+
+  // Grid: node coordinates are integers at the finest level; level k uses multiples of
+  // 2^(kmax − k). Translation in units of step_fine_, rotation (a rotation vector, world axes,
+  // applied before the anchor orientation) in units of step_fine_ / r_max radians.
+  Pose pose_of(const Key& k) const {
+    const Vec3 p = anchor_p_ + step_fine_ * Vec3(k[0], k[1], k[2]);
+    if (dims_ == 3) return with_ref(anchor_r_, p);
+    const Vec3 w = (step_fine_ / rmax_) * Vec3(k[3], k[4], k[5]);
+    return with_ref(exp_rotation(w) * anchor_r_, p);
+  }
+  bool key_in_bounds(const Key& k) const {
+    const Vec3 p = anchor_p_ + step_fine_ * Vec3(k[0], k[1], k[2]);
+    if (!in_bounds(p)) return false;
+    if (dims_ == 3) return true;
+    const Vec3 w = (step_fine_ / rmax_) * Vec3(k[3], k[4], k[5]) + anchor_w_;
+    if (pb_.rotation == RotationMode::free) return w.norm() <= std::numbers::pi;
+    for (int i = 0; i < 3; ++i)
+      if (w[i] < pb_.rotation_limits[i][0] || w[i] > pb_.rotation_limits[i][1]) return false;
+    return true;
+  }
+
+  NodeInfo check_node(const Pose& q, double step) const {
+    NodeInfo n;
+    n.distance = check_.clearance(q, check_.margin() + step);
+    n.valid = n.distance > check_.margin();
+    return n;
+  }
+
+  bool straight_line_phase(std::vector<Pose>& out);
+  bool grid_phase(std::vector<Pose>& out, PlanStatus& why);
+  bool astar(int level, std::vector<Key>& path, bool& exhausted);
+  void smooth(std::vector<Pose>& path, std::size_t fixed_prefix);
+  void report_progress(int level);
+
+  std::vector<Vec3> directions() const;
+  bool find_escape(Pose& escape);
+
+  const Problem& pb_;
+  const PlanScene& sc_;
+  const PlanOptions& opt_;
+  Checker check_;
+  Clock::time_point t_start_;
+  double time_limit_ = 60.0;
+  Vec3 c_;
+  double rmax_ = 1.0;
+  Aabb bounds_;    // for the reference point
+  Aabb goal_box_;  // the obstacles' box grown by the goal margin
+  Pose start_;     // where the search starts (after an escape from contact)
+  double start_distance_ = 0.0;
+  int dims_ = 6;
+  int kmax_ = 6;
+  double step0_ = 1.0, step_fine_ = 1.0;
+  Vec3 anchor_p_ = Vec3::Zero();
+  Mat3 anchor_r_ = Mat3::Identity();
+  Vec3 anchor_w_ = Vec3::Zero();  // rotation vector of the anchor relative to the problem start
+  std::unordered_map<Key, NodeInfo, KeyHash> nodes_;
+  std::unordered_map<EdgeKey, bool, EdgeHash> edges_;
+  std::size_t edges_checked_ = 0;
+  int level_reached_ = 0;
+  double last_progress_ = -1.0;
+};
+
+std::vector<Vec3> Planner::directions() const {
+  std::vector<Vec3> dirs;
+  auto add = [&](const Vec3& d) {
+    if (d.norm() < 1e-12) return;
+    const Vec3 u = d.normalized();
+    for (const Vec3& e : dirs)
+      if (e.dot(u) > 1.0 - 1e-9) return;
+    dirs.push_back(u);
+  };
+  // Toward the goal first, then the world axes (+z first: most parts come out upwards), then
+  // the body's principal axes.
+  if (pb_.goal) add(ref(*pb_.goal) - ref(start_));
+  for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
+    add(d);
+  const Fit f = fit(sc_.body.triangles, Fitter::inertia);
+  for (int i = 0; i < 3; ++i) {
+    add(start_.rotation * f.axes.col(i));
+    add(-(start_.rotation * f.axes.col(i)));
+  }
+  return dirs;
+}
+
+// How far the reference point can travel from `p` along `u` inside the bounds.
+double room_along(const Aabb& box, const Vec3& p, const Vec3& u) {
+  double t = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (u[i] > 1e-12) t = std::min(t, (box.max[i] - p[i]) / u[i]);
+    if (u[i] < -1e-12) t = std::min(t, (box.min[i] - p[i]) / u[i]);
+  }
+  return std::max(t, 0.0);
+}
+
+// Start in contact: a translation along one of the candidate directions, certified with the
+// contact pairs exempt, to the nearest pose where the full clearance holds.
+bool Planner::find_escape(Pose& escape) {
+  const double size = std::max(sc_.obstacle_box.extent(), 2 * rmax_);
+  double best = std::numeric_limits<double>::infinity();
+  for (const Vec3& u : directions()) {
+    const double room = room_along(bounds_, ref(start_), u);
+    for (double s = 1e-3 * size; s <= room && s < best; s *= 1.5) {
+      if (out_of_time()) return false;
+      const Pose q = with_ref(start_.rotation, ref(start_) + s * u);
+      const NodeInfo n = check_node(q, s);
+      if (!n.valid) continue;
+      if (check_.certify(start_, -1, q, -1, /*relaxed=*/true)) {
+        best = s;
+        escape = q;
+      }
+      break;  // the first valid pose along u decides this direction
+    }
+  }
+  return std::isfinite(best);
+}
+
+bool Planner::straight_line_phase(std::vector<Pose>& out) {
+  const Pose& s = start_;
+  auto try_path = [&](std::vector<Pose> poses) {
+    for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
+      if (out_of_time()) return false;
+      ++edges_checked_;
+      if (!check_.certify(poses[i], i == 0 ? start_distance_ : -1, poses[i + 1], -1)) return false;
+    }
+    out = std::move(poses);
+    return true;
+  };
+  if (pb_.goal) {
+    if (try_path({s, *pb_.goal})) return true;
+  }
+  const std::vector<Vec3> dirs = directions();
+  // One straight move out (region goal), or out and then to the goal pose.
+  for (const Vec3& u : dirs) {
+    const double room = room_along(bounds_, ref(s), u);
+    if (pb_.goal_outside) {
+      // The shortest move along u that reaches the region, if the bounds allow it.
+      double lo = 0, hi = room;
+      if (!in_goal_region(with_ref(s.rotation, ref(s) + hi * u))) continue;
+      for (int it = 0; it < 40; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (in_goal_region(with_ref(s.rotation, ref(s) + mid * u)) ? hi : lo) = mid;
+      }
+      if (try_path({s, with_ref(s.rotation, ref(s) + hi * u)})) return true;
+    } else {
+      for (double f : {0.25, 0.5, 1.0}) {
+        const Pose q = with_ref(s.rotation, ref(s) + f * room * u);
+        if (try_path({s, q, *pb_.goal})) return true;
+      }
+    }
+  }
+  // Two moves for a region goal: slide along u1, then out along u2 ⟂ u1 (a slider in a slot).
+  if (pb_.goal_outside) {
+    for (const Vec3& u1 : dirs) {
+      const double room1 = room_along(bounds_, ref(s), u1);
+      for (double f : {0.125, 0.25, 0.5, 0.75}) {
+        const Pose q1 = with_ref(s.rotation, ref(s) + f * room1 * u1);
+        const NodeInfo n1 = check_node(q1, f * room1);
+        if (!n1.valid) continue;
+        for (const Vec3& u2 : dirs) {
+          if (std::abs(u2.dot(u1)) > 0.5) continue;
+          const double room2 = room_along(bounds_, ref(q1), u2);
+          if (!in_goal_region(with_ref(s.rotation, ref(q1) + room2 * u2))) continue;
+          double lo = 0, hi = room2;
+          for (int it = 0; it < 40; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (in_goal_region(with_ref(s.rotation, ref(q1) + mid * u2)) ? hi : lo) = mid;
+          }
+          if (try_path({s, q1, with_ref(s.rotation, ref(q1) + hi * u2)})) return true;
+          if (out_of_time()) return false;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+void Planner::report_progress(int level) {
+  if (!opt_.progress) return;
+  const double now = elapsed_s();
+  if (now - last_progress_ < 1.0) return;
+  last_progress_ = now;
+  opt_.progress({level, nodes_.size(), check_.distance_queries.load(), now});
+}
+
+bool Planner::astar(int level, std::vector<Key>& path, bool& exhausted) {
+  const std::int32_t stride = 1 << (kmax_ - level);
+  const double step = step_fine_ * stride;
+  struct Entry {
+    double f, g;
+    Key key;
+    bool operator>(const Entry& o) const {
+      if (f != o.f) return f > o.f;
+      if (g != o.g) return g < o.g;  // deeper first among equals
+      return key > o.key;
+    }
+  };
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  std::unordered_map<Key, double, KeyHash> g;
+  std::unordered_map<Key, Key, KeyHash> parent;
+  const Key start{};
+  g[start] = 0.0;
+  open.push({heuristic(start_), 0.0, start});
+  const double goal_connect = std::sqrt(static_cast<double>(dims_)) * step * 1.01;
+  std::size_t expansions = 0;
+  const std::size_t max_expansions = 4'000'000;
+  exhausted = false;
+  while (!open.empty()) {
+    const Entry e = open.top();
+    open.pop();
+    if (e.key == kGoalKey) {
+      path.clear();
+      for (Key k = kGoalKey;; k = parent.at(k)) {
+        path.push_back(k);
+        if (k == start) break;
+      }
+      std::reverse(path.begin(), path.end());
+      return true;
+    }
+    auto it = g.find(e.key);
+    if (it != g.end() && e.g > it->second) continue;
+    if (++expansions > max_expansions) return false;
+    if ((expansions & 1023) == 0) {
+      if (out_of_time()) return false;
+      report_progress(level);
+    }
+    const Pose q = pose_of(e.key);
+    auto relax = [&](const Key& nk, double cost) {
+      const double ng = e.g + cost;
+      auto found = g.find(nk);
+      if (found != g.end() && found->second <= ng) return;
+      g[nk] = ng;
+      parent[nk] = e.key;
+      const double h = nk == kGoalKey ? 0.0 : heuristic(pose_of(nk));
+      open.push({ng + h, ng, nk});
+    };
+    // The goal: a region reached at this node, or the goal pose close enough to connect to.
+    if (pb_.goal_outside ? in_goal_region(q) : check_.length(q, *pb_.goal) <= goal_connect) {
+      auto ek = edges_.find({e.key, kGoalKey});
+      if (ek == edges_.end() || ek->second) relax(kGoalKey, pb_.goal_outside ? 0.0 : check_.length(q, *pb_.goal));
+    }
+    for (int d = 0; d < dims_; ++d)
+      for (int sign : {-1, 1}) {
+        Key nk = e.key;
+        nk[d] += sign * stride;
+        if (!key_in_bounds(nk)) continue;
+        auto n = nodes_.find(nk);
+        if (n != nodes_.end() && !n->second.valid) continue;
+        const Key lo = std::min(e.key, nk), hi = std::max(e.key, nk);
+        auto ek = edges_.find({lo, hi});
+        if (ek != edges_.end() && !ek->second) continue;
+        relax(nk, step);
+      }
+  }
+  exhausted = true;
+  return false;
+}
+
+bool Planner::grid_phase(std::vector<Pose>& out, PlanStatus& why) {
+  bool any_level_exhausted_all = true;
+  for (int level = 0; level <= kmax_; ++level) {
+    level_reached_ = level;
+    const double step = step_fine_ * (1 << (kmax_ - level));
+    for (;;) {
+      if (out_of_time()) {
+        why = PlanStatus::no_path_time;
+        return false;
+      }
+      report_progress(level);
+      std::vector<Key> keys;
+      bool exhausted = false;
+      if (!astar(level, keys, exhausted)) {
+        if (out_of_time()) {
+          why = PlanStatus::no_path_time;
+          return false;
+        }
+        if (!exhausted) any_level_exhausted_all = false;
+        break;  // refine
+      }
+      std::vector<Pose> poses;
+      for (const Key& k : keys) poses.push_back(k == kGoalKey ? *pb_.goal : pose_of(k));
+      if (pb_.goal_outside) {  // the last grid node is in the region: drop the marker
+        keys.pop_back();
+        poses.pop_back();
+      }
+      // Nodes first: every unknown node of the path, in parallel, consumed in path order.
+      std::vector<std::size_t> todo;
+      for (std::size_t i = 0; i < keys.size(); ++i)
+        if (keys[i] != kGoalKey && !nodes_.count(keys[i])) todo.push_back(i);
+      std::vector<NodeInfo> found(todo.size());
+      tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t j) { found[j] = check_node(poses[todo[j]], step); });
+      bool ok = true;
+      for (std::size_t j = 0; j < todo.size(); ++j) {
+        nodes_[keys[todo[j]]] = found[j];
+        ok = ok && found[j].valid;
+      }
+      if (!ok) continue;
+      // Then edges, likewise.
+      std::vector<std::size_t> etodo;
+      auto edge_key = [&](std::size_t i) {
+        return keys[i + 1] == kGoalKey ? EdgeKey{keys[i], kGoalKey}
+                                        : EdgeKey{std::min(keys[i], keys[i + 1]), std::max(keys[i], keys[i + 1])};
+      };
+      for (std::size_t i = 0; i + 1 < keys.size(); ++i)
+        if (!edges_.count(edge_key(i))) etodo.push_back(i);
+      std::vector<char> eok(etodo.size());
+      tbb::parallel_for(std::size_t{0}, etodo.size(), [&](std::size_t j) {
+        const std::size_t i = etodo[j];
+        const auto da = keys[i] == Key{} ? start_distance_ : nodes_.at(keys[i]).distance;
+        const auto db = keys[i + 1] == kGoalKey ? -1.0 : nodes_.at(keys[i + 1]).distance;
+        eok[j] = check_.certify(poses[i], da, poses[i + 1], db) ? 1 : 0;
+      });
+      edges_checked_ += etodo.size();
+      for (std::size_t j = 0; j < etodo.size(); ++j) {
+        edges_[edge_key(etodo[j])] = eok[j] != 0;
+        ok = ok && eok[j];
+      }
+      if (!ok) continue;
+      out = std::move(poses);
+      return true;
+    }
+  }
+  why = any_level_exhausted_all ? PlanStatus::no_path_bounds : PlanStatus::no_path_resolution;
+  return false;
+}
+
+void Planner::smooth(std::vector<Pose>& path, std::size_t fixed) {
+  // Greedy shortcuts: from each waypoint, the farthest later waypoint one certified segment
+  // reaches (binary search), twice over.
+  for (int round = 0; round < 2 && path.size() > fixed + 2; ++round) {
+    std::vector<Pose> out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(fixed + 1));
+    std::size_t i = fixed;
+    while (i + 1 < path.size()) {
+      if (out_of_time()) return;
+      std::size_t lo = i + 1, hi = path.size() - 1;  // lo: known reachable (an edge of the path)
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi + 1) / 2;
+        ++edges_checked_;
+        if (check_.certify(path[i], -1, path[mid], -1)) lo = mid;
+        else hi = mid - 1;
+      }
+      out.push_back(path[lo]);
+      i = lo;
+    }
+    path = std::move(out);
+  }
+}
+
+PlanResult Planner::run() {
+  PlanResult r;
+  const double size = std::max(sc_.obstacle_box.extent(), 2 * rmax_);
+  // Bounds of the reference point: given, or the obstacles' box grown so that the body fits
+  // beside it on every side.
+  goal_box_ = sc_.obstacle_box;
+  goal_box_.min.array() -= pb_.goal_margin;
+  goal_box_.max.array() += pb_.goal_margin;
+  if (pb_.bounds) {
+    bounds_ = *pb_.bounds;
+  } else {
+    bounds_ = goal_box_;
+    bounds_.min.array() -= 2.2 * rmax_ + 0.05 * size;
+    bounds_.max.array() += 2.2 * rmax_ + 0.05 * size;
+    bounds_.extend(ref(pb_.start));
+    if (pb_.goal) bounds_.extend(ref(*pb_.goal));
+  }
+  auto fail = [&](PlanStatus s, std::string msg) {
+    r.status = s;
+    r.message = std::move(msg);
+    return r;
+  };
+  if (!in_bounds(ref(pb_.start))) return fail(PlanStatus::invalid_start, "the start's reference point is outside the bounds");
+  if (pb_.goal && !in_bounds(ref(*pb_.goal))) return fail(PlanStatus::invalid_goal, "the goal's reference point is outside the bounds");
+  if (pb_.goal_outside) {
+    // The region must be reachable inside the bounds.
+    bool reachable = false;
+    for (int i = 0; i < 3; ++i)
+      reachable = reachable || bounds_.max[i] - rmax_ > goal_box_.max[i] || bounds_.min[i] + rmax_ < goal_box_.min[i];
+    if (!reachable) return fail(PlanStatus::invalid_goal, "the goal region (outside the obstacles' box) lies outside the bounds");
+  }
+  const double margin = pb_.clearance;
+  start_ = pb_.start;
+  std::vector<Pose> prefix{pb_.start};
+  start_distance_ = check_.clearance(start_, margin + 0.05 * size);
+  if (pb_.goal) {
+    const double dg = check_.clearance(*pb_.goal, margin);
+    if (dg <= margin) {
+      std::ostringstream os;
+      os << "the goal pose is closer than the clearance " << margin << " to the obstacles (distance " << dg << ")";
+      return fail(PlanStatus::invalid_goal, os.str());
+    }
+  }
+  if (start_distance_ <= margin) {
+    if (pb_.contact_tolerance <= 0.0) {
+      std::ostringstream os;
+      os << "the start pose is " << (start_distance_ <= 0 ? "in collision with" : "closer than the clearance to")
+         << " the obstacles (distance " << start_distance_ << ", clearance " << margin
+         << "); set planner.contact_tolerance for a part that starts in contact";
+      return fail(PlanStatus::invalid_start, os.str());
+    }
+    std::vector<char> body_in, obstacle_in;
+    contact_sets(sc_, start_, margin + pb_.contact_tolerance, body_in, obstacle_in);
+    check_.set_contact_model(body_in, obstacle_in);
+    Pose escape;
+    if (!find_escape(escape)) {
+      r.time_ms.search = elapsed_s() * 1e3;
+      return fail(out_of_time() ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
+                  "the body starts in contact and no straight escape (along the world axes, the body's axes "
+                  "or toward the goal) reaches a pose with the full clearance");
+    }
+    start_ = escape;
+    prefix.push_back(escape);
+    start_distance_ = check_.clearance(start_, margin + 0.05 * size);
+  }
+
+  // Grid set-up, anchored at the search start.
+  dims_ = pb_.rotation == RotationMode::none ? 3 : 6;
+  anchor_p_ = ref(start_);
+  anchor_r_ = start_.rotation;
+  anchor_w_ = Eigen::AngleAxisd(start_.rotation * pb_.start.rotation.transpose()).angle() *
+              Eigen::AngleAxisd(start_.rotation * pb_.start.rotation.transpose()).axis();
+  step0_ = (bounds_.max - bounds_.min).maxCoeff() / 8.0;
+  kmax_ = 0;
+  const double finest = std::max(margin, 2e-3 * size);
+  while (kmax_ < 7 && step0_ / (1 << kmax_) > finest) ++kmax_;
+  step_fine_ = step0_ / (1 << kmax_);
+  nodes_[Key{}] = NodeInfo{true, start_distance_};
+
+  std::vector<Pose> path;
+  bool found = false;
+  if (is_goal(start_)) {
+    path = {start_};
+    found = true;
+    r.level = -1;
+  }
+  if (!found && straight_line_phase(path)) {
+    found = true;
+    r.level = -1;
+  }
+  PlanStatus why = PlanStatus::no_path_resolution;
+  if (!found && !out_of_time()) {
+    found = grid_phase(path, why);
+    r.level = level_reached_;
+  }
+  const double t_search = elapsed_s();
+  r.time_ms.search = t_search * 1e3;
+  r.nodes_checked = nodes_.size();
+  if (!found) {
+    if (out_of_time()) why = PlanStatus::no_path_time;
+    std::ostringstream os;
+    switch (why) {
+      case PlanStatus::no_path_time: os << "no path found within the time limit of " << time_limit_ << " s"; break;
+      case PlanStatus::no_path_bounds:
+        os << "no path exists inside the bounds and rotation limits at the grid resolutions searched (finest step "
+           << step_fine_ << " " << pb_.unit << ")";
+        break;
+      default: os << "no path found down to the finest grid resolution (step " << step_fine_ << " " << pb_.unit << ")"; break;
+    }
+    r.edges_checked = edges_checked_;
+    r.queries.distance = check_.distance_queries.load();
+    return fail(why, os.str());
+  }
+  // Smoothing after the escape prefix (which stays as it is).
+  std::vector<Pose> full = prefix;
+  full.insert(full.end(), path.begin() + 1, path.end());
+  const std::size_t fixed = prefix.size() - 1;
+  smooth(full, fixed);
+  const double t_smooth = elapsed_s();
+  r.time_ms.smooth = (t_smooth - t_search) * 1e3;
+
+  // Final certification of every segment, and the smallest distance along the path (exact
+  // distance at 32 samples a segment; the certificate guarantees the margin in between).
+  double min_d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < full.size(); ++i) {
+    const bool relaxed = i < fixed;
+    if (!check_.certify(full[i], -1, full[i + 1], -1, relaxed)) {
+      return fail(PlanStatus::no_path_resolution, "internal: a segment of the found path failed its final certification");
+    }
+    if (relaxed) continue;  // the escape from contact is closer than the margin by design
+    for (int k = 0; k <= 32; ++k) {
+      const Pose q = interpolate(full[i], full[i + 1], k / 32.0, c_);
+      min_d = std::min(min_d, check_.exact(q));
+    }
+  }
+  if (!std::isfinite(min_d)) min_d = check_.exact(full.back());
+  r.status = PlanStatus::solved;
+  r.path.poses = std::move(full);
+  for (std::size_t i = 0; i + 1 < r.path.poses.size(); ++i) {
+    const Pose& a = r.path.poses[i];
+    const Pose& b = r.path.poses[i + 1];
+    r.translation_length += (ref(b) - ref(a)).norm();
+    r.rotation_length += rotation_angle(a.rotation, b.rotation);
+    r.path_length += check_.length(a, b);
+  }
+  r.min_clearance = min_d;
+  r.path_hash = path_hash(r.path);
+  r.edges_checked = edges_checked_;
+  r.queries.distance = check_.distance_queries.load();
+  r.time_ms.total = elapsed_s() * 1e3;
+  std::ostringstream os;
+  os << "solved" << (r.level < 0 ? " by straight moves" : " on the grid at level " + std::to_string(r.level)) << ": "
+     << r.path.poses.size() << " waypoints";
+  r.message = os.str();
+  return r;
+}
+
+}  // namespace
+
+PlanResult plan(const Problem& problem, const PlanScene& scene, const PlanOptions& options) {
+  const int threads = options.threads.value_or(problem.threads);
+  std::unique_ptr<tbb::global_control> limit;
+  if (threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  Planner planner(problem, scene, options);
+  PlanResult r = planner.run();
+  r.time_ms.build = scene.build_ms;
+  r.time_ms.total += scene.build_ms;
+  return r;
+}
+
+}  // namespace swept

@@ -1,0 +1,139 @@
+// The planner on problems generated here: every path checked independently of the planner.
+#include "plan/plan_support.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace swept {
+namespace {
+
+using namespace swept::test;
+
+void expect_ends(const GeneratedProblem& g, const PlanScene& s, const PlanResult& r) {
+  ASSERT_TRUE(r.solved()) << r.message;
+  const Pose& first = r.path.poses.front();
+  EXPECT_EQ(first.rotation, g.problem.start.rotation);
+  EXPECT_EQ(first.translation, g.problem.start.translation);
+  const Pose& last = r.path.poses.back();
+  if (g.problem.goal) {
+    EXPECT_LT((last.translation - g.problem.goal->translation).norm(), 1e-9);
+    EXPECT_LT(rotation_angle(last.rotation, g.problem.goal->rotation), 1e-9);
+  } else {
+    // Outside the obstacles' box grown by the margin: no body vertex inside it.
+    Aabb grown = s.obstacle_box;
+    grown.min.array() -= g.problem.goal_margin;
+    grown.max.array() += g.problem.goal_margin;
+    Aabb body;
+    for (const Triangle& t : s.body.triangles)
+      for (int v = 0; v < 3; ++v) body.extend(last.apply(t[v]));
+    bool separated = false;
+    for (int i = 0; i < 3; ++i) separated = separated || body.min[i] > grown.max[i] || body.max[i] < grown.min[i];
+    EXPECT_TRUE(separated) << "the path does not end outside the obstacles' box";
+  }
+  EXPECT_GE(r.min_clearance, g.problem.clearance);
+  EXPECT_EQ(r.path_hash, path_hash(r.path));
+}
+
+TEST(Planner, PegOutOfBlindHoleWithTightClearance) {
+  const auto g = peg_in_hole();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  expect_ends(g, s, r);
+  verify_path(s, r.path, g.problem.clearance);
+  std::printf("peg: %zu waypoints, %llu distance queries, %.1f ms\n", r.path.poses.size(),
+              static_cast<unsigned long long>(r.queries.distance), r.time_ms.total);
+}
+
+TEST(Planner, SliderOutOfTSlotThenLift) {
+  const auto g = t_slot();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  expect_ends(g, s, r);
+  verify_path(s, r.path, g.problem.clearance);
+  // It cannot lift first: the head is under the lips.
+  EXPECT_GE(r.path.poses.size(), 3u);
+}
+
+TEST(Planner, BoxThroughLShapedTunnel) {
+  const auto g = l_tunnel();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  expect_ends(g, s, r);
+  verify_path(s, r.path, g.problem.clearance);
+  EXPECT_GE(r.path.poses.size(), 3u);
+}
+
+TEST(Planner, BarTurnsToPassANarrowSlot) {
+  const auto g = bar_through_slot();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  expect_ends(g, s, r);
+  verify_path(s, r.path, g.problem.clearance);
+  EXPECT_GT(r.rotation_length, 0.5) << "the bar must turn to pass";
+}
+
+TEST(Planner, StartTouchingWithContactTolerance) {
+  // The peg rests on the bottom of its hole and touches one wall: distance 0 at the start.
+  auto g = peg_in_hole(10.0, 1e-2);
+  const double c = 1e-2 * 10.0;
+  g.problem.start = Pose::from_translation(Vec3(-c, 0, -20 + 12.5));
+  g.problem.clearance = 0.01;
+  {
+    const PlanScene s = scene_of(g);
+    const PlanResult r = plan(g.problem, s);
+    EXPECT_EQ(r.status, PlanStatus::invalid_start) << r.message;
+    EXPECT_NE(r.message.find("contact_tolerance"), std::string::npos) << r.message;
+  }
+  g.problem.contact_tolerance = 0.02;
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  expect_ends(g, s, r);
+  // After the escape segment (checked with the contact pairs exempt) the path keeps the margin.
+  verify_path(s, r.path, g.problem.clearance, /*skip_first=*/true);
+  // The escape moves away from the wall and the bottom it touched: after the start, no sample
+  // of the escape segment intersects the obstacles.
+  for (int k = 1; k <= 1000; ++k) {
+    const Pose q = interpolate(r.path.poses[0], r.path.poses[1], k / 1000.0, s.reference);
+    ASSERT_FALSE(collide(s.obstacle_tree, Pose{}, s.body_tree, q).colliding) << "escape penetrates at t=" << k / 1000.0;
+  }
+}
+
+TEST(Planner, NoSolutionIsReportedWithinTheLimit) {
+  const auto g = enclosed();
+  const PlanScene s = scene_of(g);
+  const auto t0 = std::chrono::steady_clock::now();
+  const PlanResult r = plan(g.problem, s);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_FALSE(r.solved());
+  EXPECT_TRUE(r.status == PlanStatus::no_path_bounds || r.status == PlanStatus::no_path_resolution ||
+              r.status == PlanStatus::no_path_time)
+      << r.message;
+  EXPECT_FALSE(r.message.empty());
+  EXPECT_LT(secs, g.problem.time_limit + 5.0);
+  EXPECT_TRUE(r.path.poses.empty());
+}
+
+TEST(Planner, StartInCollisionAndGoalOutsideBoundsAreErrors) {
+  auto g = l_tunnel();
+  g.problem.start = Pose::from_translation(Vec3(10, 0, 8));  // inside the roof
+  const PlanScene s = scene_of(g);
+  PlanResult r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_start);
+  EXPECT_NE(r.message.find("collision"), std::string::npos) << r.message;
+  g = l_tunnel();
+  g.problem.goal = Pose::from_translation(Vec3(100, 0, 0));
+  r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_goal);
+  EXPECT_NE(r.message.find("bounds"), std::string::npos) << r.message;
+}
+
+TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
+  const auto g = l_tunnel();
+  const PlanScene s = scene_of(g);
+  std::vector<std::uint64_t> hashes;
+  for (int threads : {1, 2, 1, 2}) hashes.push_back(plan(g.problem, s, {.threads = threads}).path_hash);
+  for (std::uint64_t h : hashes) EXPECT_EQ(h, hashes[0]);
+}
+
+}  // namespace
+}  // namespace swept
