@@ -55,7 +55,6 @@ struct Outcome {
 
 struct Scratch {
   std::vector<Vec3> projected;
-  std::vector<Vec3> sides[2];
   std::vector<std::uint32_t> ids[2];
   std::vector<std::uint8_t> side[3];
 };
@@ -91,47 +90,46 @@ struct Builder {
     if (n <= static_cast<std::size_t>(config.leaf_size)) return out;
     out.leaf = false;
 
-    // Candidate planes through the split position, across e1, e2, e3 (min-sa) or e1 only. The
-    // cost of a candidate is SA(L) + SA(R) of the RSSs fitted to the two subsets in the node's
-    // frame, from the projections already made for the node's own RSS.
+    // Candidate planes through the split position, across e1, e2, e3 (min-sa) or e1 only
+    // (largest). The cost of a candidate is SA(L) + SA(R), where each subset's RSS is the one
+    // enclosing the subset's bounding box in the node's frame (rectangle: the box's e1 × e2
+    // extent; radius: half its e3 extent). All candidates are measured in one pass over the
+    // projections already made for the node's own RSS.
     const Vec3 split = f.axes.transpose() * (f.split_point - origin);
     const int candidates = config.split == SplitRule::min_sa ? 3 : 1;
-    double best_cost = std::numeric_limits<double>::infinity();
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Vec3 lo[3][2], hi[3][2];
+    std::size_t left[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+      s.side[a].resize(n);
+      lo[a][0] = lo[a][1] = Vec3::Constant(inf);
+      hi[a][0] = hi[a][1] = Vec3::Constant(-inf);
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      const Vec3& p0 = s.projected[3 * j];
+      const Vec3& p1 = s.projected[3 * j + 1];
+      const Vec3& p2 = s.projected[3 * j + 2];
+      const Vec3 tlo = p0.cwiseMin(p1).cwiseMin(p2), thi = p0.cwiseMax(p1).cwiseMax(p2);
+      const Vec3 centre = (p0 + p1 + p2) / 3.0;
+      for (int a = 0; a < candidates; ++a) {
+        const int right = centre[a] - split[a] >= 0.0 ? 1 : 0;
+        s.side[a][j] = static_cast<std::uint8_t>(right);
+        left[a] += 1 - right;
+        lo[a][right] = lo[a][right].cwiseMin(tlo);
+        hi[a][right] = hi[a][right].cwiseMax(thi);
+      }
+    }
+    double best_cost = inf;
     int best = -1;
     for (int a = 0; a < candidates; ++a) {
-      std::vector<std::uint8_t>& side = s.side[a];
-      side.resize(n);
-      std::size_t left = 0;
-      for (std::size_t j = 0; j < n; ++j) {
-        const double c = (s.projected[3 * j][a] + s.projected[3 * j + 1][a] + s.projected[3 * j + 2][a]) / 3.0;
-        const bool right = c - split[a] >= 0.0;
-        side[j] = right ? 1 : 0;
-        left += right ? 0 : 1;
-      }
-      if (left == 0 || left == n) continue;  // leaves one side empty: not a candidate
-      bool repeat = false;  // the same partition as an earlier axis costs the same
-      for (int b = 0; b < a && !repeat; ++b)
-        repeat = s.side[b].size() == n && std::memcmp(side.data(), s.side[b].data(), n) == 0;
-      if (repeat) continue;
-      if (candidates == 1) {
-        best = a;
-        break;
-      }
-      s.sides[0].clear();
-      s.sides[1].clear();
-      for (std::size_t j = 0; j < n; ++j) {
-        auto& dst = s.sides[side[j]];
-        dst.push_back(s.projected[3 * j]);
-        dst.push_back(s.projected[3 * j + 1]);
-        dst.push_back(s.projected[3 * j + 2]);
-      }
+      if (left[a] == 0 || left[a] == n) continue;  // leaves one side empty: not a candidate
       double cost = 0.0;
       for (int k = 0; k < 2; ++k) {
-        const auto e = detail::rss_extents(s.sides[k].data(), s.sides[k].size());
-        const double w = e.xhi - e.xlo, h = e.yhi - e.ylo;
-        cost += 2.0 * w * h + 2.0 * std::numbers::pi * (w + h) * e.r + 4.0 * std::numbers::pi * e.r * e.r;
+        const Vec3 ext = hi[a][k] - lo[a][k];
+        const double w = ext.x(), h = ext.y(), r = 0.5 * ext.z();
+        cost += 2.0 * w * h + 2.0 * std::numbers::pi * (w + h) * r + 4.0 * std::numbers::pi * r * r;
       }
-      if (cost < best_cost) {
+      if (cost < best_cost) {  // ties keep the earlier axis
         best_cost = cost;
         best = a;
       }

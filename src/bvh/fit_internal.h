@@ -42,6 +42,10 @@ struct RectExtents {
 /// The smallest RSS (in the frame the points are given in) containing the points (SPEC §2.3).
 RectExtents rss_extents(const Vec3* points, std::size_t count);
 
+/// The RSS extents of two groups of triangles at once: `pts` holds 3 points per triangle and
+/// `side[i]` ∈ {0, 1} is triangle i's group. Both groups must be non-empty.
+void rss_extents_by_side(const Vec3* pts, std::size_t triangles, const std::uint8_t* side, RectExtents out[2]);
+
 /// The RSS of extents given in the frame `axes` with origin `origin`.
 Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin);
 

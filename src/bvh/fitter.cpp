@@ -39,9 +39,10 @@ TriInfo make_tri_info(const Triangle& t) {
 }
 
 void sorted_eigen(const Mat3& m, Mat3& axes, Vec3& values) {
-  // The iterative (QL) solver: accurate also for nearly repeated eigenvalues, where the
-  // closed-form one loses digits.
-  Eigen::SelfAdjointEigenSolver<Mat3> solver(m, Eigen::ComputeEigenvectors);
+  // Eigen's closed-form 3×3 solver (with its own refinement of nearly repeated roots): several
+  // times faster than the iterative one, and within 1e-9 of it on the fitters' tests.
+  Eigen::SelfAdjointEigenSolver<Mat3> solver;
+  solver.computeDirect(m, Eigen::ComputeEigenvectors);
   const Vec3 ev = solver.eigenvalues();  // ascending
   const Mat3 vec = solver.eigenvectors();
   values = Vec3(ev[2], ev[1], ev[0]);
@@ -167,67 +168,105 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
   return out;
 }
 
-RectExtents rss_extents(const Vec3* pts, std::size_t count) {
-  RectExtents e;
-  if (count == 0) return e;
-  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
-  for (std::size_t j = 0; j < count; ++j) {
-    zmin = std::min(zmin, pts[j].z());
-    zmax = std::max(zmax, pts[j].z());
-  }
-  const double r = 0.5 * (zmax - zmin);
-  const double zc = 0.5 * (zmax + zmin);
-  const double r2 = r * r;
-  auto in_plane_radius = [&](const Vec3& p) {
-    const double dz = p.z() - zc;
-    return std::sqrt(std::max(r2 - dz * dz, 0.0));
-  };
+namespace {
 
+// The RSS extents (SPEC §2.3) of several groups of points at once: points come in runs of
+// `run` (the vertices of one triangle), and `group(i)` ∈ [0, G) is run i's group. One pass for
+// the box, one for the edges, one for the corners.
+template <int G, class GroupOf>
+void extents_of_groups(const Vec3* pts, std::size_t runs, std::size_t run, GroupOf group, RectExtents* out) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec3 lo[G], hi[G];
+  for (int g = 0; g < G; ++g) lo[g] = Vec3::Constant(inf), hi[g] = Vec3::Constant(-inf);
+  for (std::size_t i = 0; i < runs; ++i) {
+    const int g = group(i);
+    for (std::size_t v = 0; v < run; ++v) {
+      lo[g] = lo[g].cwiseMin(pts[i * run + v]);
+      hi[g] = hi[g].cwiseMax(pts[i * run + v]);
+    }
+  }
+  double r2[G], zc[G], xlo[G], xhi[G], ylo[G], yhi[G];
+  for (int g = 0; g < G; ++g) {
+    const double r = 0.5 * (hi[g].z() - lo[g].z());
+    out[g].r = r;
+    zc[g] = out[g].zc = 0.5 * (hi[g].z() + lo[g].z());
+    r2[g] = r * r;
+    // Start from bounds the result cannot exceed (the extreme vertex, moved by at most r), so
+    // that vertices well inside skip the square root below.
+    xlo[g] = lo[g].x() + r;
+    xhi[g] = hi[g].x() - r;
+    ylo[g] = lo[g].y() + r;
+    yhi[g] = hi[g].y() - r;
+  }
   // The tightest edges ignoring the rounded corners: each vertex may stick out of an edge by at
-  // most its in-plane radius ρ.
-  double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
-  for (std::size_t j = 0; j < count; ++j) {
-    const Vec3& p = pts[j];
-    const double rho = in_plane_radius(p);
-    xlo = std::min(xlo, p.x() + rho);
-    xhi = std::max(xhi, p.x() - rho);
-    ylo = std::min(ylo, p.y() + rho);
-    yhi = std::max(yhi, p.y() - rho);
+  // most its in-plane radius ρ = √(r² − dz²).
+  for (std::size_t i = 0; i < runs; ++i) {
+    const int g = group(i);
+    for (std::size_t v = 0; v < run; ++v) {
+      const Vec3& p = pts[i * run + v];
+      if (p.x() >= xlo[g] && p.x() <= xhi[g] && p.y() >= ylo[g] && p.y() <= yhi[g]) continue;
+      const double dz = p.z() - zc[g];
+      const double rho = std::sqrt(std::max(r2[g] - dz * dz, 0.0));
+      xlo[g] = std::min(xlo[g], p.x() + rho);
+      xhi[g] = std::max(xhi[g], p.x() - rho);
+      ylo[g] = std::min(ylo[g], p.y() + rho);
+      yhi[g] = std::max(yhi[g], p.y() - rho);
+    }
   }
-  if (xlo > xhi) xlo = xhi = 0.5 * (xlo + xhi);
-  if (ylo > yhi) ylo = yhi = 0.5 * (ylo + yhi);
-
+  for (int g = 0; g < G; ++g) {
+    if (xlo[g] > xhi[g]) xlo[g] = xhi[g] = 0.5 * (xlo[g] + xhi[g]);
+    if (ylo[g] > yhi[g]) ylo[g] = yhi[g] = 0.5 * (ylo[g] + yhi[g]);
+  }
   // Corners: a vertex outside both an x and a y edge must be within ρ of the corner; if not,
   // push one edge outwards (the cheaper in area) just enough. Edges only ever move outwards, so
   // earlier vertices stay inside.
-  for (std::size_t j = 0; j < count; ++j) {
-    const Vec3& p = pts[j];
-    const double dx = std::max({xlo - p.x(), p.x() - xhi, 0.0});
-    const double dy = std::max({ylo - p.y(), p.y() - yhi, 0.0});
-    if (dx == 0.0 || dy == 0.0) continue;  // beside an edge: inside by the first pass
-    const double rho = in_plane_radius(p);
-    if (dx * dx + dy * dy <= rho * rho) continue;
-    const double w = xhi - xlo, h = yhi - ylo;
-    // Either edge alone can take the vertex (the first pass keeps dx, dy ≤ ρ up to rounding).
-    const double need_x = dx - std::sqrt(std::max(rho * rho - dy * dy, 0.0));
-    const double need_y = dy - std::sqrt(std::max(rho * rho - dx * dx, 0.0));
-    if (dy <= rho && (dx > rho || need_x * h <= need_y * w)) {
-      const double allowed = std::sqrt(std::max(rho * rho - dy * dy, 0.0));
-      if (p.x() < xlo) xlo = p.x() + allowed;
-      else xhi = p.x() - allowed;
-    } else if (dx <= rho) {
-      const double allowed = std::sqrt(std::max(rho * rho - dx * dx, 0.0));
-      if (p.y() < ylo) ylo = p.y() + allowed;
-      else yhi = p.y() - allowed;
-    } else {  // rounding pushed both beyond ρ: take the vertex's x in, then y to within ρ
-      if (p.x() < xlo) xlo = p.x();
-      else xhi = p.x();
-      if (p.y() < ylo) ylo = p.y() + rho;
-      else yhi = p.y() - rho;
+  for (std::size_t i = 0; i < runs; ++i) {
+    const int g = group(i);
+    for (std::size_t v = 0; v < run; ++v) {
+      const Vec3& p = pts[i * run + v];
+      const double dx = std::max(std::max(xlo[g] - p.x(), p.x() - xhi[g]), 0.0);
+      const double dy = std::max(std::max(ylo[g] - p.y(), p.y() - yhi[g]), 0.0);
+      if (dx == 0.0 || dy == 0.0) continue;  // beside an edge: inside by the pass above
+      const double dz = p.z() - zc[g];
+      const double rho2 = std::max(r2[g] - dz * dz, 0.0);
+      if (dx * dx + dy * dy <= rho2) continue;
+      const double rho = std::sqrt(rho2);
+      const double w = xhi[g] - xlo[g], h = yhi[g] - ylo[g];
+      // Either edge alone can take the vertex (the pass above keeps dx, dy ≤ ρ up to rounding).
+      const double need_x = dx - std::sqrt(std::max(rho2 - dy * dy, 0.0));
+      const double need_y = dy - std::sqrt(std::max(rho2 - dx * dx, 0.0));
+      if (dy <= rho && (dx > rho || need_x * h <= need_y * w)) {
+        const double allowed = std::sqrt(std::max(rho2 - dy * dy, 0.0));
+        if (p.x() < xlo[g]) xlo[g] = p.x() + allowed;
+        else xhi[g] = p.x() - allowed;
+      } else if (dx <= rho) {
+        const double allowed = std::sqrt(std::max(rho2 - dx * dx, 0.0));
+        if (p.y() < ylo[g]) ylo[g] = p.y() + allowed;
+        else yhi[g] = p.y() - allowed;
+      } else {  // rounding pushed both beyond ρ: take the vertex's x in, then y to within ρ
+        if (p.x() < xlo[g]) xlo[g] = p.x();
+        else xhi[g] = p.x();
+        if (p.y() < ylo[g]) ylo[g] = p.y() + rho;
+        else yhi[g] = p.y() - rho;
+      }
     }
   }
-  e.xlo = xlo, e.xhi = xhi, e.ylo = ylo, e.yhi = yhi, e.zc = zc, e.r = r;
+  for (int g = 0; g < G; ++g) {
+    out[g].xlo = xlo[g], out[g].xhi = xhi[g], out[g].ylo = ylo[g], out[g].yhi = yhi[g];
+  }
+}
+
+}  // namespace
+
+RectExtents rss_extents(const Vec3* pts, std::size_t count) {
+  RectExtents e;
+  if (count == 0) return e;
+  extents_of_groups<1>(pts, count, 1, [](std::size_t) { return 0; }, &e);
   return e;
+}
+
+void rss_extents_by_side(const Vec3* pts, std::size_t triangles, const std::uint8_t* side, RectExtents out[2]) {
+  extents_of_groups<2>(pts, triangles, 3, [side](std::size_t i) { return static_cast<int>(side[i]); }, out);
 }
 
 Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
