@@ -12,7 +12,7 @@ packages=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libfcl-dev libompl-dev
+  libfcl-dev libompl-dev zlib1g-dev
   chromium
 )
 missing=()

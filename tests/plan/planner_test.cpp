@@ -8,6 +8,7 @@ namespace swept {
 namespace {
 
 using namespace swept::test;
+using namespace swept::scenes;
 
 void expect_ends(const GeneratedProblem& g, const PlanScene& s, const PlanResult& r) {
   ASSERT_TRUE(r.solved()) << r.message;

@@ -18,7 +18,7 @@ class ProblemFiles : public ::testing::Test {
     dir = fs::temp_directory_path() / ("swept_problem_" + std::to_string(::getpid()) + "_" +
                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir);
-    const auto g = test::peg_in_hole();
+    const auto g = scenes::peg_in_hole();
     ASSERT_TRUE(write_stl_binary(dir / "block.stl", g.obstacles));
     ASSERT_TRUE(write_stl_binary(dir / "peg.stl", g.body));
   }

@@ -1,0 +1,131 @@
+// Build speed of the RSS trees (issue: ≥ 1M triangles/s for inertia + min-sa on 2 threads,
+// within 1.25× of pqp + min-sa), every fitter and split rule, and FCL's BVHModel<RSS> build of
+// the same mesh in the same run; prints the ratios at the end.
+//   bench_build [--benchmark_filter=...]
+// Mesh: SWEPT_BENCH_MESH (any format swept reads; SWEPT_BENCH_DEFLECTION for CAD, default 0.01),
+// else occt/hammer.brep from the shared data at 0.01 mm deflection (≈1.3M triangles).
+#include "swept/bvh/bvh.h"
+#include "swept/io/mesh_io.h"
+
+#include <benchmark/benchmark.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/math/bv/RSS.h>
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <string>
+
+namespace {
+
+using namespace swept;
+
+const std::vector<Triangle>& mesh() {
+  static const std::vector<Triangle> tris = [] {
+    std::string file = SWEPT_SHARED_DATA "/occt/hammer.brep";
+    if (const char* f = std::getenv("SWEPT_BENCH_MESH")) file = f;
+    ImportOptions io;
+    io.linear_deflection = 0.01;
+    if (const char* d = std::getenv("SWEPT_BENCH_DEFLECTION")) io.linear_deflection = std::atof(d);
+    auto m = import_mesh(file, io);
+    if (!m) {
+      std::cerr << "bench_build: " << m.error().message << "\n";
+      std::exit(1);
+    }
+    std::cerr << "bench_build: " << file << ": " << m->triangle_count() << " triangles\n";
+    return m->merged().triangles;
+  }();
+  return tris;
+}
+
+std::map<std::string, double>& seconds_per_build() {
+  static std::map<std::string, double> m;
+  return m;
+}
+
+void BM_Swept(benchmark::State& state, Fitter fitter, SplitRule split) {
+  const auto& tris = mesh();
+  const int threads = static_cast<int>(state.range(0));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  for (auto _ : state) {
+    auto bvh = build_bvh(tris, {.fitter = fitter, .split = split, .parallel = threads > 1});
+    benchmark::DoNotOptimize(bvh);
+  }
+  state.counters["Mtri/s"] = benchmark::Counter(static_cast<double>(tris.size()) * 1e-6 * state.iterations(),
+                                                benchmark::Counter::kIsRate);
+  state.counters["triangles"] = static_cast<double>(tris.size());
+}
+
+void BM_FclRss(benchmark::State& state) {
+  const auto& tris = mesh();
+  std::vector<fcl::Vector3d> vertices;
+  std::vector<fcl::Triangle> faces;
+  vertices.reserve(3 * tris.size());
+  for (const Triangle& t : tris) {
+    const auto base = vertices.size();
+    vertices.emplace_back(t.p);
+    vertices.emplace_back(t.q);
+    vertices.emplace_back(t.r);
+    faces.emplace_back(base, base + 1, base + 2);
+  }
+  for (auto _ : state) {
+    fcl::BVHModel<fcl::RSSd> model;
+    model.beginModel(static_cast<int>(faces.size()), static_cast<int>(vertices.size()));
+    model.addSubModel(vertices, faces);
+    model.endModel();
+    benchmark::DoNotOptimize(model);
+  }
+  state.counters["Mtri/s"] = benchmark::Counter(static_cast<double>(tris.size()) * 1e-6 * state.iterations(),
+                                                benchmark::Counter::kIsRate);
+}
+
+// Records seconds per build per benchmark name, to print the ratios after the run.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs)
+      if (r.run_type == Run::RT_Iteration && r.iterations > 0)
+        seconds_per_build()[r.benchmark_name()] = r.GetAdjustedRealTime() * 1e-3;  // ms → s
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  const std::pair<const char*, Fitter> fitters[] = {{"pqp", Fitter::pqp}, {"rapid2", Fitter::rapid2}, {"inertia", Fitter::inertia}};
+  const std::pair<const char*, SplitRule> splits[] = {{"min-sa", SplitRule::min_sa}, {"largest", SplitRule::largest}};
+  for (auto& [fn, f] : fitters)
+    for (auto& [sn, s] : splits)
+      benchmark::RegisterBenchmark((std::string("swept/") + fn + "/" + sn).c_str(), BM_Swept, f, s)
+          ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+  benchmark::RegisterBenchmark("fcl/RSS", BM_FclRss)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  auto& t = seconds_per_build();
+  const double n = static_cast<double>(mesh().size());
+  std::printf("\nBuild speed, %.0f triangles (million triangles per second; ratio = time / time of the reference)\n", n);
+  auto row = [&](const std::string& name, const std::string& ref) {
+    if (!t.count(name)) return;
+    std::printf("  %-34s %7.3f Mtri/s", name.c_str(), n / t[name] * 1e-6);
+    if (t.count(ref)) std::printf("   %5.2fx the time of %s", t[name] / t[ref], ref.c_str());
+    std::printf("\n");
+  };
+  for (const char* threads : {"1", "2"}) {
+    for (auto& [fn, f] : fitters)
+      for (auto& [sn, s] : splits) {
+        const std::string name = std::string("swept/") + fn + "/" + sn + "/" + threads + "/iterations:3/real_time";
+        row(name, std::string("swept/pqp/") + sn + "/" + threads + "/iterations:3/real_time");
+      }
+  }
+  row("fcl/RSS/iterations:3/real_time", "");
+  const std::string ours = "swept/inertia/min-sa/2/iterations:3/real_time";
+  if (t.count(ours) && t.count("fcl/RSS/iterations:3/real_time"))
+    std::printf("  FCL RSS build time / swept inertia+min-sa (2 threads): %.2fx\n", t["fcl/RSS/iterations:3/real_time"] / t[ours]);
+  benchmark::Shutdown();
+  return 0;
+}
