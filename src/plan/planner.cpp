@@ -206,7 +206,8 @@ const Key kGoalKey = {INT_MIN, INT_MIN, INT_MIN, INT_MIN, INT_MIN, INT_MIN};
 
 struct NodeInfo {
   bool valid = false;
-  double distance = 0.0;
+  double distance = 0.0;  ///< lower bound on the distance at the node
+  bool exact = true;      ///< from a query (else inherited from a neighbour's bound)
 };
 
 class Planner {
@@ -269,16 +270,16 @@ class Planner {
     return true;
   }
 
-  NodeInfo check_node(const Pose& q, double step) const {
+  NodeInfo check_node(const Pose& q, double reach) const {
     NodeInfo n;
-    n.distance = check_.clearance(q, check_.margin() + step);
+    n.distance = check_.clearance(q, check_.margin() + reach);
     n.valid = n.distance > check_.margin();
     return n;
   }
 
   bool straight_line_phase(std::vector<Pose>& out);
   bool grid_phase(std::vector<Pose>& out, PlanStatus& why);
-  bool astar(int level, std::vector<Key>& path, bool& exhausted);
+  bool search_level(int level, std::size_t budget, std::vector<Key>& path, bool& exhausted);
   void smooth(std::vector<Pose>& path, std::size_t fixed_prefix);
   void report_progress(int level);
 
@@ -432,73 +433,108 @@ void Planner::report_progress(int level) {
   opt_.progress({level, nodes_.size(), check_.distance_queries.load(), now});
 }
 
-bool Planner::astar(int level, std::vector<Key>& path, bool& exhausted) {
+// Lazy weighted A* (Cohen, Phillips, Likhachev 2014) on the grid of one level: an entry is a
+// (node, parent) pair; a node and the edge from its parent are checked only when the entry is
+// popped. A node's distance bound carries to its neighbours by the 1-Lipschitz property of the
+// distance in the motion metric (D(q') ≥ D(q) − d(q, q')), so in open space most nodes and edges
+// need no query at all.
+bool Planner::search_level(int level, std::size_t budget, std::vector<Key>& path, bool& exhausted) {
   const std::int32_t stride = 1 << (kmax_ - level);
   const double step = step_fine_ * stride;
+  const double margin = check_.margin();
+  constexpr double kWeight = 2.0;
   struct Entry {
     double f, g;
-    Key key;
+    Key key, parent;
     bool operator>(const Entry& o) const {
       if (f != o.f) return f > o.f;
       if (g != o.g) return g < o.g;  // deeper first among equals
-      return key > o.key;
+      if (key != o.key) return key > o.key;
+      return parent > o.parent;
     }
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  std::unordered_map<Key, double, KeyHash> g;
-  std::unordered_map<Key, Key, KeyHash> parent;
+  std::unordered_map<Key, Key, KeyHash> closed;  // node → parent
+  std::unordered_map<Key, double, KeyHash> best_g;
   const Key start{};
-  g[start] = 0.0;
-  open.push({heuristic(start_), 0.0, start});
+  open.push({kWeight * heuristic(start_), 0.0, start, start});
   const double goal_connect = std::sqrt(static_cast<double>(dims_)) * step * 1.01;
   std::size_t expansions = 0;
-  const std::size_t max_expansions = 4'000'000;
   exhausted = false;
+  auto edge_key = [](const Key& a, const Key& b) {
+    return b == kGoalKey ? EdgeKey{a, kGoalKey} : EdgeKey{std::min(a, b), std::max(a, b)};
+  };
   while (!open.empty()) {
     const Entry e = open.top();
     open.pop();
-    if (e.key == kGoalKey) {
+    if (closed.count(e.key)) continue;
+    if ((++expansions & 255) == 0) {
+      if (out_of_time()) return false;
+      report_progress(level);
+    }
+    if (expansions > budget) return false;
+    // The node.
+    NodeInfo* node = nullptr;
+    if (e.key != kGoalKey) {
+      auto it = nodes_.find(e.key);
+      if (it == nodes_.end() || (it->second.valid && !it->second.exact && it->second.distance <= margin + step)) {
+        // Unknown, or known only by a bound too weak to carry on: query it.
+        it = nodes_.insert_or_assign(e.key, check_node(pose_of(e.key), 4.0 * step)).first;
+      }
+      if (!it->second.valid) continue;
+      node = &it->second;
+    }
+    // The edge from its parent.
+    if (e.key != start) {
+      const EdgeKey ek = edge_key(e.parent, e.key);
+      auto ed = edges_.find(ek);
+      if (ed == edges_.end()) {
+        const Pose a = pose_of(e.parent);
+        const Pose b = e.key == kGoalKey ? *pb_.goal : pose_of(e.key);
+        const double da = nodes_.at(e.parent).distance;
+        const double db = node ? node->distance : -1.0;
+        ++edges_checked_;
+        ed = edges_.emplace(ek, check_.certify(a, da, b, db)).first;
+      }
+      if (!ed->second) continue;
+    }
+    closed.emplace(e.key, e.parent);
+    if (e.key == kGoalKey || (pb_.goal_outside && in_goal_region(pose_of(e.key)))) {
       path.clear();
-      for (Key k = kGoalKey;; k = parent.at(k)) {
+      for (Key k = e.key;; k = closed.at(k)) {
         path.push_back(k);
         if (k == start) break;
       }
       std::reverse(path.begin(), path.end());
       return true;
     }
-    auto it = g.find(e.key);
-    if (it != g.end() && e.g > it->second) continue;
-    if (++expansions > max_expansions) return false;
-    if ((expansions & 1023) == 0) {
-      if (out_of_time()) return false;
-      report_progress(level);
-    }
     const Pose q = pose_of(e.key);
-    auto relax = [&](const Key& nk, double cost) {
+    auto push = [&](const Key& nk, double cost) {
       const double ng = e.g + cost;
-      auto found = g.find(nk);
-      if (found != g.end() && found->second <= ng) return;
-      g[nk] = ng;
-      parent[nk] = e.key;
+      auto bg = best_g.find(nk);
+      if (bg != best_g.end() && bg->second <= ng) return;
+      best_g[nk] = ng;
       const double h = nk == kGoalKey ? 0.0 : heuristic(pose_of(nk));
-      open.push({ng + h, ng, nk});
+      open.push({ng + kWeight * h, ng, nk, e.key});
     };
-    // The goal: a region reached at this node, or the goal pose close enough to connect to.
-    if (pb_.goal_outside ? in_goal_region(q) : check_.length(q, *pb_.goal) <= goal_connect) {
-      auto ek = edges_.find({e.key, kGoalKey});
-      if (ek == edges_.end() || ek->second) relax(kGoalKey, pb_.goal_outside ? 0.0 : check_.length(q, *pb_.goal));
+    if (!pb_.goal_outside && check_.length(q, *pb_.goal) <= goal_connect) {
+      auto ed = edges_.find({e.key, kGoalKey});
+      if (ed == edges_.end() || ed->second) push(kGoalKey, check_.length(q, *pb_.goal));
     }
+    const double inherited = node->distance - step;
     for (int d = 0; d < dims_; ++d)
       for (int sign : {-1, 1}) {
         Key nk = e.key;
         nk[d] += sign * stride;
-        if (!key_in_bounds(nk)) continue;
+        if (closed.count(nk) || !key_in_bounds(nk)) continue;
         auto n = nodes_.find(nk);
         if (n != nodes_.end() && !n->second.valid) continue;
-        const Key lo = std::min(e.key, nk), hi = std::max(e.key, nk);
-        auto ek = edges_.find({lo, hi});
-        if (ek != edges_.end() && !ek->second) continue;
-        relax(nk, step);
+        // A neighbour well inside this node's free ball is free, and so is the edge to it.
+        if (n == nodes_.end() && inherited > margin) {
+          nodes_.emplace(nk, NodeInfo{true, inherited, false});
+          edges_.emplace(edge_key(e.key, nk), true);
+        }
+        push(nk, step);
       }
   }
   exhausted = true;
@@ -506,70 +542,26 @@ bool Planner::astar(int level, std::vector<Key>& path, bool& exhausted) {
 }
 
 bool Planner::grid_phase(std::vector<Pose>& out, PlanStatus& why) {
-  bool any_level_exhausted_all = true;
+  bool all_exhausted = true;
+  // Coarse levels get a budget of expansions, so that a level too coarse for a narrow passage
+  // does not eat the time limit; the finest level runs until the time limit.
   for (int level = 0; level <= kmax_; ++level) {
     level_reached_ = level;
-    const double step = step_fine_ * (1 << (kmax_ - level));
-    for (;;) {
-      if (out_of_time()) {
-        why = PlanStatus::no_path_time;
-        return false;
-      }
-      report_progress(level);
-      std::vector<Key> keys;
-      bool exhausted = false;
-      if (!astar(level, keys, exhausted)) {
-        if (out_of_time()) {
-          why = PlanStatus::no_path_time;
-          return false;
-        }
-        if (!exhausted) any_level_exhausted_all = false;
-        break;  // refine
-      }
-      std::vector<Pose> poses;
-      for (const Key& k : keys) poses.push_back(k == kGoalKey ? *pb_.goal : pose_of(k));
-      if (pb_.goal_outside) {  // the last grid node is in the region: drop the marker
-        keys.pop_back();
-        poses.pop_back();
-      }
-      // Nodes first: every unknown node of the path, in parallel, consumed in path order.
-      std::vector<std::size_t> todo;
-      for (std::size_t i = 0; i < keys.size(); ++i)
-        if (keys[i] != kGoalKey && !nodes_.count(keys[i])) todo.push_back(i);
-      std::vector<NodeInfo> found(todo.size());
-      tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t j) { found[j] = check_node(poses[todo[j]], step); });
-      bool ok = true;
-      for (std::size_t j = 0; j < todo.size(); ++j) {
-        nodes_[keys[todo[j]]] = found[j];
-        ok = ok && found[j].valid;
-      }
-      if (!ok) continue;
-      // Then edges, likewise.
-      std::vector<std::size_t> etodo;
-      auto edge_key = [&](std::size_t i) {
-        return keys[i + 1] == kGoalKey ? EdgeKey{keys[i], kGoalKey}
-                                        : EdgeKey{std::min(keys[i], keys[i + 1]), std::max(keys[i], keys[i + 1])};
-      };
-      for (std::size_t i = 0; i + 1 < keys.size(); ++i)
-        if (!edges_.count(edge_key(i))) etodo.push_back(i);
-      std::vector<char> eok(etodo.size());
-      tbb::parallel_for(std::size_t{0}, etodo.size(), [&](std::size_t j) {
-        const std::size_t i = etodo[j];
-        const auto da = keys[i] == Key{} ? start_distance_ : nodes_.at(keys[i]).distance;
-        const auto db = keys[i + 1] == kGoalKey ? -1.0 : nodes_.at(keys[i + 1]).distance;
-        eok[j] = check_.certify(poses[i], da, poses[i + 1], db) ? 1 : 0;
-      });
-      edges_checked_ += etodo.size();
-      for (std::size_t j = 0; j < etodo.size(); ++j) {
-        edges_[edge_key(etodo[j])] = eok[j] != 0;
-        ok = ok && eok[j];
-      }
-      if (!ok) continue;
-      out = std::move(poses);
+    const std::size_t budget = level == kmax_ ? std::numeric_limits<std::size_t>::max() : std::size_t{4000} << level;
+    std::vector<Key> keys;
+    bool exhausted = false;
+    if (search_level(level, budget, keys, exhausted)) {
+      out.clear();
+      for (const Key& k : keys) out.push_back(k == kGoalKey ? *pb_.goal : pose_of(k));
       return true;
     }
+    if (out_of_time()) {
+      why = PlanStatus::no_path_time;
+      return false;
+    }
+    all_exhausted = all_exhausted && exhausted;
   }
-  why = any_level_exhausted_all ? PlanStatus::no_path_bounds : PlanStatus::no_path_resolution;
+  why = all_exhausted ? PlanStatus::no_path_bounds : PlanStatus::no_path_resolution;
   return false;
 }
 
@@ -706,6 +698,7 @@ PlanResult Planner::run() {
     }
     r.edges_checked = edges_checked_;
     r.queries.distance = check_.distance_queries.load();
+    r.time_ms.total = elapsed_s() * 1e3;
     return fail(why, os.str());
   }
   // Smoothing after the escape prefix (which stays as it is).
