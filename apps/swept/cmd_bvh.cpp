@@ -9,6 +9,9 @@
 #include <tbb/global_control.h>
 
 #include <chrono>
+#include <filesystem>
+#include <map>
+#include <sstream>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -29,6 +32,7 @@ struct BvhOptions {
   int leaf_size = 1;
   int threads = 0;
   bool json = false;
+  bool markdown = false;
 };
 
 std::vector<Fitter> fitters_from(const std::string& text) {
@@ -53,6 +57,9 @@ void run(const BvhOptions& o) {
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
 
   nlohmann::json meshes = nlohmann::json::array();
+  std::ostringstream md;
+  md << "| file | triangles | fitter | split | nodes | depth | total SA | total volume | SA / pqp | volume / pqp | build ms |\n"
+     << "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   Table table({"file", "fitter", "split", "triangles", "nodes", "depth", "total SA", "total volume",
                "build ms", "bytes"});
   for (const std::string& file : o.files) {
@@ -67,6 +74,7 @@ void run(const BvhOptions& o) {
     nlohmann::json entry{{"file", file}, {"triangles", soup.triangles.size()},
                          {"degenerate_triangles", model->degenerate_triangles}, {"unit", o.unit}};
     nlohmann::json rows = nlohmann::json::array();
+    std::map<SplitRule, BvhStats> pqp_stats;  // reference row for the ratios
     for (Fitter f : fitters) {
       for (SplitRule s : splits) {
         BuildConfig config{.fitter = f, .split = s, .leaf_size = o.leaf_size, .parallel = o.threads != 1};
@@ -79,6 +87,13 @@ void run(const BvhOptions& o) {
         rows.push_back({{"fitter", to_string(f)}, {"split", to_string(s)}, {"nodes", st.nodes},
                         {"depth", st.depth}, {"total_surface_area", st.total_surface_area},
                         {"total_volume", st.total_volume}, {"build_ms", ms}, {"bytes", st.bytes}});
+        if (f == Fitter::pqp) pqp_stats[s] = st;
+        auto ratio = [&](double v, double ref) { return pqp_stats.count(s) && ref > 0 ? fmt_fixed(v / ref, 3) : std::string("–"); };
+        md << "| " << std::filesystem::path(file).filename().string() << " | " << st.triangles << " | " << to_string(f) << " | "
+           << to_string(s) << " | " << st.nodes << " | " << st.depth << " | " << fmt_sci(st.total_surface_area) << " | "
+           << fmt_sci(st.total_volume) << " | "
+           << ratio(st.total_surface_area, pqp_stats.count(s) ? pqp_stats[s].total_surface_area : 0) << " | "
+           << ratio(st.total_volume, pqp_stats.count(s) ? pqp_stats[s].total_volume : 0) << " | " << fmt_fixed(ms, 1) << " |\n";
         table.add({file, std::string(to_string(f)), std::string(to_string(s)), fmt_int(st.triangles),
                    fmt_int(st.nodes), std::to_string(st.depth), fmt_sci(st.total_surface_area),
                    fmt_sci(st.total_volume), fmt_fixed(ms, 1), fmt_int(st.bytes)});
@@ -89,6 +104,8 @@ void run(const BvhOptions& o) {
   }
   if (o.json) {
     std::cout << nlohmann::json{{"meshes", meshes}}.dump(2) << "\n";
+  } else if (o.markdown) {
+    std::cout << md.str();
   } else {
     table.print(std::cout);
   }
@@ -118,6 +135,7 @@ void add_bvh_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "Build threads (0: all cores; 1: serial build)")->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", o->json, "Print one JSON document instead of the table");
+  cmd->add_flag("--markdown", o->markdown, "Print a Markdown table, with SA and volume relative to pqp (list pqp first)");
   cmd->callback([o] { run(*o); });
 }
 
