@@ -1,0 +1,66 @@
+// `swept bvh` end to end: the table, the JSON document, and errors for bad input.
+#include "swept/io/mesh_io.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace swept {
+namespace {
+
+namespace fs = std::filesystem;
+
+int run_cli(const std::string& args, std::string& out) {
+  FILE* pipe = ::popen((std::string(SWEPT_CLI) + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buf;
+  std::size_t n;
+  out.clear();
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(BvhCli, JsonForEveryFitterAndSplit) {
+  const fs::path dir = fs::temp_directory_path() / ("swept_bvh_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  TriangleSoup soup;
+  for (int i = 0; i < 50; ++i) {
+    const double x = i;
+    soup.triangles.push_back({Vec3(x, 0, 0), Vec3(x + 1, 0, 0), Vec3(x, 1, 0.1 * i)});
+  }
+  ASSERT_TRUE(write_stl_binary(dir / "strip.stl", soup));
+  std::string out;
+  ASSERT_EQ(run_cli("bvh " + (dir / "strip.stl").string() + " --fitter all --split all --json", out), 0) << out;
+  const auto doc = nlohmann::json::parse(out);
+  ASSERT_EQ(doc["meshes"].size(), 1u);
+  const auto& m = doc["meshes"][0];
+  EXPECT_EQ(m["triangles"].get<int>(), 50);
+  ASSERT_EQ(m["fitters"].size(), 6u);
+  for (const auto& f : m["fitters"]) {
+    for (const char* key : {"fitter", "split", "nodes", "depth", "total_surface_area", "total_volume", "build_ms", "bytes"})
+      EXPECT_TRUE(f.contains(key)) << key;
+    EXPECT_EQ(f["nodes"].get<int>(), 99);
+    EXPECT_GT(f["total_surface_area"].get<double>(), 0.0);
+  }
+  // The aligned table names every fitter.
+  ASSERT_EQ(run_cli("bvh " + (dir / "strip.stl").string() + " --fitter all", out), 0);
+  for (const char* name : {"pqp", "rapid2", "inertia", "total SA"}) EXPECT_NE(out.find(name), std::string::npos) << name;
+  // Bad input: a missing file, an unknown fitter.
+  EXPECT_NE(run_cli("bvh " + (dir / "none.stl").string(), out), 0);
+  EXPECT_NE(run_cli("bvh " + (dir / "strip.stl").string() + " --fitter best", out), 0);
+  EXPECT_NE(out.find("best"), std::string::npos) << out;
+  std::ofstream(dir / "empty.stl") << "";
+  EXPECT_EQ(run_cli("bvh " + (dir / "empty.stl").string(), out), 1);
+  EXPECT_NE(out.find("empty.stl"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace swept
