@@ -1,14 +1,15 @@
 #pragma once
 /// Mesh and CAD import into triangle soups (double precision), one soup per part.
 ///
-/// Meshes (STL ASCII/binary, OBJ, PLY, OFF, glTF/GLB, COLLADA) are read with assimp; CAD
-/// (STEP, IGES, OCCT .brep) with OpenCASCADE, tessellated by BRepMesh, assembly placements
-/// applied. Bad input gives an Error naming the file and the line, triangle or entity.
+/// STL (ASCII/binary) is read by swept itself in double precision; OBJ, PLY, OFF, glTF/GLB and
+/// COLLADA with assimp; CAD (STEP, IGES, OCCT .brep) with OpenCASCADE, tessellated by BRepMesh,
+/// assembly placements applied. Bad input gives an Error naming the file and the line, triangle or entity.
 #include "swept/geometry/result.h"
 #include "swept/geometry/types.h"
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace swept {
@@ -18,15 +19,18 @@ namespace swept {
 /// Returns false for anything else.
 bool unit_scale(std::string_view unit, double& metres_per_unit);
 
+/// How to import: output unit, the file's unit where it has none, tessellation of CAD.
 struct ImportOptions {
   /// Unit of the output coordinates.
   std::string unit = "mm";
-  /// Unit of the file's coordinates, for formats that carry none (STL, OBJ, PLY, OFF, glTF
-  /// assumes metres per its spec unless this is set). Empty: "mm" for mesh formats; STEP/IGES
-  /// use the unit declared in the file, and .brep files are taken as mm.
+  /// Unit of the file's coordinates. Empty: "mm" for STL, OBJ, PLY, OFF and .brep; "m" for
+  /// glTF/GLB (its spec) and COLLADA (assimp applies the file's <unit>). Ignored for STEP and
+  /// IGES, which declare their unit (e.g. inch) and are converted from it.
   std::string file_unit;
-  /// BRepMesh linear deflection, in the *output* unit, and angular deflection in radians.
+  /// BRepMesh linear deflection (max chord distance to the surface) in the *output* unit;
+  /// CAD formats only, must be > 0.
   double linear_deflection = 0.1;
+  /// BRepMesh angular deflection in radians; CAD formats only, must be > 0.
   double angular_deflection = 0.5;
 };
 
@@ -35,18 +39,37 @@ struct ImportedModel {
   std::string file;                  ///< the path as given
   std::string unit;                  ///< unit of the coordinates (ImportOptions::unit)
   std::vector<TriangleSoup> parts;   ///< one per part/solid/mesh, with its name
-  std::size_t degenerate_triangles = 0;  ///< zero-area triangles kept in the parts
+  /// Triangles kept in the parts although degenerate: shape_quality() ≤ 1e-12 (zero area,
+  /// repeated or collinear vertices, up to rounding).
+  std::size_t degenerate_triangles = 0;
+  /// Non-fatal problems (e.g. CAD faces BRepMesh could not tessellate, left out), each naming the file.
+  std::vector<std::string> warnings;
 
+  /// Total number of triangles over all parts.
   std::size_t triangle_count() const;
   /// All parts in one soup (the file's stem as its name).
   TriangleSoup merged() const;
 };
 
 /// Reads a mesh or CAD file; the format is chosen from the extension (case-insensitive):
-/// .stl .obj .ply .off .gltf .glb .dae → assimp; .step .stp .iges .igs .brep → OpenCASCADE.
+/// .stl → swept's own reader (ASCII and binary, double precision, exact line/triangle errors);
+/// .obj .ply .off .gltf .glb .dae → assimp (only aiProcess_Triangulate: degenerate triangles and
+/// duplicate vertices are kept); .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly
+/// placements and names; BRepMesh in parallel, deterministic). Part names: STL solid names,
+/// assimp mesh/node names, STEP/IGES product names, "<stem>_solid<k>" for .brep solids;
+/// repeated names get "#2", "#3", ... in file order. Parts without triangles are dropped.
+///
+/// Errors (never exceptions), each starting with the file as given: unknown output/file unit
+/// (with the accepted list), unknown extension, missing file, empty file, truncated binary STL
+/// ("header says N triangles, file holds M"), malformed ASCII STL/OBJ/OFF ("line L: ..."),
+/// non-finite coordinates ("triangle I has a non-finite coordinate", I 0-based within its part,
+/// or the line for ASCII formats), unreadable STEP/IGES (with the failing entities), a file
+/// without triangles, non-positive deflections for CAD formats.
 Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options = {});
 
-/// Writes a binary STL (little-endian, float32). Deterministic bytes for equal input.
+/// Writes a binary STL (little-endian, float32; normals from the vertex order, zero for
+/// degenerate triangles; an 80-byte header not starting with "solid"). Deterministic bytes
+/// for equal input. Error (nothing written) on non-finite coordinates or an unwritable path.
 Result<bool> write_stl_binary(const std::filesystem::path& file, const TriangleSoup& soup);
 
 }  // namespace swept

@@ -1,0 +1,373 @@
+// OBJ, PLY, OFF, glTF/GLB and COLLADA through assimp. Post-processing is limited to
+// triangulating polygons so the soup stays as the file has it (no degenerate removal, no vertex
+// merging). OBJ, OFF and PLY files are checked first (line by line where they are text), because
+// assimp parses malformed or non-finite numbers without complaint, cannot say on which line they
+// were, and hangs on some truncated PLY files.
+#include "import_detail.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <string_view>
+
+namespace swept::io_detail {
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    std::size_t j = i;
+    while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+    if (j > i) out.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+std::string quoted(std::string_view s) {
+  std::string out(1, '\'');
+  out.append(s.substr(0, 40));
+  if (s.size() > 40) out.append("...");
+  out.push_back('\'');
+  return out;
+}
+
+// Parses a decimal number; "" on success, else the reason.
+std::string parse_number(std::string_view s, double& x) {
+  std::string_view t = s;
+  if (!t.empty() && t[0] == '+') t.remove_prefix(1);
+  const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+  if (ec == std::errc::result_out_of_range) return "number " + quoted(s) + " is out of range";
+  if (ec != std::errc() || ptr != t.data() + t.size()) return "malformed number " + quoted(s);
+  if (!std::isfinite(x)) return "non-finite coordinate " + quoted(s);
+  return {};
+}
+
+// Parses an integer; false if it is not one.
+bool parse_int(std::string_view s, long long& v) {
+  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  return ec == std::errc() && ptr == s.data() + s.size();
+}
+
+// Calls f(line_number, tokens) for every line with tokens after stripping '#' comments;
+// stops at the first non-empty string f returns.
+template <class F>
+std::string for_each_line(const std::string& text, F&& f) {
+  std::size_t pos = 0;
+  int line_no = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    auto tokens = split(line);
+    if (tokens.empty()) continue;
+    std::string err = f(line_no, tokens);
+    if (!err.empty()) return "line " + std::to_string(line_no) + ": " + err;
+  }
+  return {};
+}
+
+// OBJ: vertices need three finite numbers, faces at least three valid vertex references
+// (1-based, or negative = relative to the last vertex, to a vertex already defined).
+std::string check_obj(const std::string& text) {
+  long long vertices = 0;
+  return for_each_line(text, [&](int, const std::vector<std::string_view>& tok) -> std::string {
+    if (tok[0] == "v") {
+      if (tok.size() < 4) return "a vertex needs 3 coordinates, found " + std::to_string(tok.size() - 1);
+      for (int k = 1; k <= 3; ++k) {
+        double x;
+        if (std::string e = parse_number(tok[k], x); !e.empty()) return e + " (vertex " + std::to_string(vertices + 1) + ")";
+      }
+      ++vertices;
+    } else if (tok[0] == "f") {
+      if (tok.size() < 4) return "a face needs at least 3 vertices, found " + std::to_string(tok.size() - 1);
+      for (std::size_t k = 1; k < tok.size(); ++k) {
+        std::string_view ref = tok[k].substr(0, tok[k].find('/'));
+        long long idx = 0;
+        if (!parse_int(ref, idx) || idx == 0) return "malformed face vertex " + quoted(tok[k]);
+        const long long abs_idx = idx > 0 ? idx : vertices + 1 + idx;
+        if (abs_idx < 1 || abs_idx > vertices)
+          return "face refers to vertex " + std::to_string(idx) + " but " + std::to_string(vertices) +
+                 " vertices are defined so far";
+      }
+    }
+    return {};
+  });
+}
+
+// OFF: header, counts, then the vertex and face lines.
+std::string check_off(const std::string& text) {
+  enum class Stage { header, counts, vertices, faces, done } stage = Stage::header;
+  long long nv = 0, nf = 0, seen_v = 0, seen_f = 0;
+  std::string err = for_each_line(text, [&](int, std::vector<std::string_view> tok) -> std::string {
+    if (stage == Stage::header) {
+      const std::string h = lower(std::string(tok[0]));
+      if (h != "off" && h != "coff" && h != "noff" && h != "cnoff")
+        return "expected the 'OFF' header, found " + quoted(tok[0]);
+      stage = Stage::counts;
+      tok.erase(tok.begin());
+      if (tok.empty()) return {};
+    }
+    if (stage == Stage::counts) {
+      if (tok.size() < 2 || !parse_int(tok[0], nv) || !parse_int(tok[1], nf) || nv < 0 || nf < 0)
+        return "expected the vertex and face counts";
+      stage = nv > 0 ? Stage::vertices : (nf > 0 ? Stage::faces : Stage::done);
+      return {};
+    }
+    if (stage == Stage::vertices) {
+      if (tok.size() < 3) return "a vertex needs 3 coordinates, found " + std::to_string(tok.size());
+      for (int k = 0; k < 3; ++k) {
+        double x;
+        if (std::string e = parse_number(tok[k], x); !e.empty()) return e + " (vertex " + std::to_string(seen_v) + ")";
+      }
+      if (++seen_v == nv) stage = nf > 0 ? Stage::faces : Stage::done;
+      return {};
+    }
+    if (stage == Stage::faces) {
+      long long k = 0;
+      if (!parse_int(tok[0], k) || k < 3) return "a face needs a vertex count of at least 3, found " + quoted(tok[0]);
+      if (static_cast<long long>(tok.size()) < k + 1)
+        return "face " + std::to_string(seen_f) + " lists fewer than its " + std::to_string(k) + " vertices";
+      for (long long i = 1; i <= k; ++i) {
+        long long idx = 0;
+        if (!parse_int(tok[i], idx)) return "malformed vertex index " + quoted(tok[i]);
+        if (idx < 0 || idx >= nv)
+          return "face " + std::to_string(seen_f) + " refers to vertex " + std::to_string(idx) + " of " + std::to_string(nv);
+      }
+      if (++seen_f == nf) stage = Stage::done;
+      return {};
+    }
+    return {};
+  });
+  if (!err.empty()) return err;
+  if (stage == Stage::header) return "no 'OFF' header";
+  if (stage == Stage::counts) return "unexpected end of file: no vertex and face counts";
+  if (stage != Stage::done)
+    return "unexpected end of file: header says " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces, file holds " + std::to_string(seen_v) + " and " + std::to_string(seen_f);
+  return {};
+}
+
+// PLY: the header, then every element's data, walked without interpreting it. assimp's PLY
+// reader can loop forever on a truncated ASCII body and reads past a truncated binary one.
+struct PlyProperty {
+  std::string name;
+  int size = 0;       // scalar size in bytes, or the list's item size
+  int count_size = 0; // > 0 for a list: size of its count
+};
+struct PlyElement {
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+int ply_type_size(std::string_view t) {
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+  if (t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+std::string check_ply(const std::string& bytes) {
+  std::size_t pos = 0;
+  int line_no = 0;
+  std::string format;
+  std::vector<PlyElement> elements;
+  bool ended = false;
+  while (!ended) {
+    if (pos >= bytes.size()) return "unexpected end of file inside the header (no 'end_header')";
+    std::size_t end = bytes.find('\n', pos);
+    if (end == std::string::npos) end = bytes.size();
+    const auto tok = split(std::string_view(bytes.data() + pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    const std::string at = "line " + std::to_string(line_no) + ": ";
+    if (line_no == 1) {
+      if (tok.empty() || lower(std::string(tok[0])) != "ply") return "not a PLY file (no 'ply' magic)";
+      continue;
+    }
+    if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
+    if (tok[0] == "format") {
+      if (tok.size() < 2) return at + "incomplete 'format' line";
+      format = std::string(tok[1]);
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+        return at + "unknown PLY format " + quoted(tok[1]);
+    } else if (tok[0] == "element") {
+      PlyElement e;
+      if (tok.size() < 3 || !parse_int(tok[2], e.count) || e.count < 0) return at + "malformed 'element' line";
+      e.name = std::string(tok[1]);
+      elements.push_back(std::move(e));
+    } else if (tok[0] == "property") {
+      if (elements.empty()) return at + "'property' before any 'element'";
+      PlyProperty p;
+      if (tok.size() >= 5 && tok[1] == "list") {
+        p.count_size = ply_type_size(tok[2]);
+        p.size = ply_type_size(tok[3]);
+        p.name = std::string(tok[4]);
+        if (p.count_size == 0 || p.size == 0) return at + "unknown list type";
+      } else if (tok.size() >= 3) {
+        p.size = ply_type_size(tok[1]);
+        p.name = std::string(tok[2]);
+        if (p.size == 0) return at + "unknown property type " + quoted(tok[1]);
+      } else {
+        return at + "malformed 'property' line";
+      }
+      elements.back().properties.push_back(p);
+    } else if (tok[0] == "end_header") {
+      ended = true;
+    } else {
+      return at + "unexpected header keyword " + quoted(tok[0]);
+    }
+  }
+  if (format.empty()) return "the header has no 'format' line";
+
+  if (format == "ascii") {
+    for (const PlyElement& e : elements) {
+      for (long long i = 0; i < e.count; ++i) {
+        std::vector<std::string_view> tok;
+        while (tok.empty()) {
+          if (pos >= bytes.size())
+            return "unexpected end of file: element '" + e.name + "' " + std::to_string(i) + " of " +
+                   std::to_string(e.count) + " is missing";
+          std::size_t end = bytes.find('\n', pos);
+          if (end == std::string::npos) end = bytes.size();
+          tok = split(std::string_view(bytes.data() + pos, end - pos));
+          pos = end + 1;
+          ++line_no;
+        }
+        const std::string at = "line " + std::to_string(line_no) + ": ";
+        std::size_t k = 0;
+        for (const PlyProperty& p : e.properties) {
+          if (k >= tok.size()) return at + "element '" + e.name + "' " + std::to_string(i) + " has too few values";
+          if (p.count_size > 0) {
+            long long n = 0;
+            if (!parse_int(tok[k], n) || n < 0) return at + "malformed list count " + quoted(tok[k]);
+            k += 1 + static_cast<std::size_t>(n);
+            if (k > tok.size()) return at + "list '" + p.name + "' has fewer than its " + std::to_string(n) + " values";
+          } else {
+            double x = 0.0;
+            if (std::string err = parse_number(tok[k], x); !err.empty())
+              return at + err + " (element '" + e.name + "' " + std::to_string(i) + ", property '" + p.name + "')";
+            ++k;
+          }
+        }
+      }
+    }
+    return {};
+  }
+
+  const bool little = format == "binary_little_endian";
+  for (const PlyElement& e : elements) {
+    for (long long i = 0; i < e.count; ++i) {
+      for (const PlyProperty& p : e.properties) {
+        std::size_t need = static_cast<std::size_t>(p.count_size > 0 ? p.count_size : p.size);
+        if (pos + need > bytes.size())
+          return "truncated binary PLY: element '" + e.name + "' " + std::to_string(i) + " of " +
+                 std::to_string(e.count) + " ends past the end of the file";
+        if (p.count_size > 0) {
+          unsigned long long n = 0;
+          for (int b = 0; b < p.count_size; ++b) {
+            const auto byte = static_cast<unsigned char>(bytes[pos + static_cast<std::size_t>(b)]);
+            n |= static_cast<unsigned long long>(byte) << (8 * (little ? b : p.count_size - 1 - b));
+          }
+          need += static_cast<std::size_t>(n) * static_cast<std::size_t>(p.size);
+          if (pos + need > bytes.size())
+            return "truncated binary PLY: element '" + e.name + "' " + std::to_string(i) + " of " +
+                   std::to_string(e.count) + " ends past the end of the file";
+        }
+        pos += need;
+      }
+    }
+  }
+  return {};
+}
+
+using Affine = Eigen::Matrix<double, 3, 4>;
+
+Affine to_affine(const aiMatrix4x4& m) {
+  Affine a;
+  a << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4;
+  return a;
+}
+
+Affine compose(const Affine& parent, const Affine& child) {
+  Affine out;
+  out.leftCols<3>() = parent.leftCols<3>() * child.leftCols<3>();
+  out.col(3) = parent.leftCols<3>() * child.col(3) + parent.col(3);
+  return out;
+}
+
+void collect(const aiScene& scene, const aiNode& node, const Affine& parent, double scale, const std::string& stem,
+             std::vector<TriangleSoup>& parts) {
+  const Affine world = compose(parent, to_affine(node.mTransformation));
+  for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+    TriangleSoup soup;
+    soup.name = mesh.mName.length > 0 ? std::string(mesh.mName.C_Str())
+                : node.mName.length > 0 ? std::string(node.mName.C_Str())
+                                        : stem;
+    soup.triangles.reserve(mesh.mNumFaces);
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines are not surface
+      Triangle t;
+      for (int v = 0; v < 3; ++v) {
+        const aiVector3D& a = mesh.mVertices[face.mIndices[v]];
+        const Vec3 p(a.x, a.y, a.z);
+        t[v] = scale * (world.leftCols<3>() * p + world.col(3));
+      }
+      soup.triangles.push_back(t);
+    }
+    parts.push_back(std::move(soup));
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c) collect(scene, *node.mChildren[c], world, scale, stem, parts);
+}
+
+}  // namespace
+
+Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
+  const std::string ext = lower(ctx.file.extension().string());
+  if (ext == ".obj" || ext == ".off" || ext == ".ply") {
+    Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
+    if (!text) return text.error();
+    const std::string err = ext == ".obj" ? check_obj(*text) : ext == ".off" ? check_off(*text) : check_ply(*text);
+    if (!err.empty()) return file_error(ctx.display, err);
+  }
+
+  try {
+    Assimp::Importer importer;
+    // Keep COLLADA coordinates as authored (assimp would rotate Z-up files to Y-up).
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+    const aiScene* scene = importer.ReadFile(ctx.file.string(), aiProcess_Triangulate);
+    if (scene == nullptr) return file_error(ctx.display, std::string("assimp: ") + importer.GetErrorString());
+    if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
+    const std::string stem = ctx.file.stem().string();
+    collect(*scene, *scene->mRootNode, Affine::Identity(), ctx.file_to_output, stem, parts);
+  } catch (const std::exception& e) {
+    return file_error(ctx.display, std::string("assimp: ") + e.what());
+  }
+  return true;
+}
+
+}  // namespace swept::io_detail

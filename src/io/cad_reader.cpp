@@ -1,0 +1,382 @@
+// STEP, IGES and OCCT .brep through OpenCASCADE. STEP and IGES go through XCAF so that assembly
+// instances come out with their placements and part names; every unique part shape is
+// tessellated once by BRepMesh (in parallel over faces, which is deterministic because each face
+// is meshed independently), then each instance's faces are transformed into the common frame.
+#include "import_detail.h"
+
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESCAFControl_Reader.hxx>
+#include <IMeshTools_Parameters.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
+#include <Poly_Triangulation.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TDF_Label.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopLoc_Location.hxx>
+#include <TopTools_MapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <UnitsMethods.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <XSControl_WorkSession.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+namespace swept::io_detail {
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+/// One placed part: the shape (with its instance location applied) and its name.
+struct Instance {
+  TopoDS_Shape shape;
+  std::string name;
+};
+
+std::string label_name(const TDF_Label& label) {
+  Handle(TDataStd_Name) attr;
+  if (!label.FindAttribute(TDataStd_Name::GetID(), attr)) return {};
+  const TCollection_ExtendedString& ext = attr->Get();
+  // Part names are ASCII in practice; non-ASCII characters become '?'.
+  std::string out;
+  out.reserve(static_cast<std::size_t>(ext.Length()));
+  for (int i = 1; i <= ext.Length(); ++i) {
+    const char16_t c = ext.Value(i);
+    out.push_back(c < 128 ? static_cast<char>(c) : '?');
+  }
+  return out;
+}
+
+void collect_instances(const Handle(XCAFDoc_ShapeTool)& tool, const TDF_Label& label, const TopLoc_Location& loc,
+                       const std::string& name, std::vector<Instance>& out) {
+  if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+    TDF_LabelSequence components;
+    XCAFDoc_ShapeTool::GetComponents(label, components, false);
+    for (int i = 1; i <= components.Length(); ++i) {
+      const TDF_Label& comp = components.Value(i);
+      TDF_Label referred;
+      if (!XCAFDoc_ShapeTool::GetReferredShape(comp, referred)) continue;
+      std::string child = label_name(referred);
+      if (child.empty()) child = label_name(comp);
+      collect_instances(tool, referred, loc * XCAFDoc_ShapeTool::GetLocation(comp), child, out);
+    }
+    return;
+  }
+  const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+  if (shape.IsNull()) return;
+  out.push_back({shape.Moved(loc), name});
+}
+
+// Collects the failure messages OCCT's file parsers send to the default messenger (the STEP
+// parser reports syntax errors with their line only there).
+class FailCollector : public Message_Printer {
+ public:
+  mutable std::vector<std::string> fails;
+
+ protected:
+  void send(const TCollection_AsciiString& text, const Message_Gravity gravity) const override {
+    if (gravity >= Message_Fail && fails.size() < 5) {
+      std::string line(text.ToCString());
+      // "**** ERR StepFile : Undefined Parsing: Line 5: ... ****" -> "Line 5: ..."
+      while (!line.empty() && (line.back() == '\n' || line.back() == ' ' || line.back() == '*')) line.pop_back();
+      for (const char* prefix : {"Undefined Parsing: ", ": "}) {
+        if (const std::size_t at = line.find(prefix); at != std::string::npos && line.compare(0, 4, "****") == 0) {
+          line.erase(0, at + std::strlen(prefix));
+          break;
+        }
+      }
+      fails.push_back(line);
+    }
+  }
+};
+
+// The XSTEP readers share static state (parameters, the parser's messenger): one read at a time.
+std::mutex& xstep_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// Failure messages of the reader's syntax and semantic checks, with the file's entity labels.
+std::string check_messages(const XSControl_Reader& reader) {
+  Handle(XSControl_WorkSession) ws = reader.WS();
+  if (ws.IsNull()) return {};
+  Handle(Interface_InterfaceModel) model = ws->Model();
+  Interface_CheckIterator checks = ws->ModelCheckList();
+  std::string out;
+  int shown = 0;
+  for (checks.Start(); checks.More() && shown < 5; checks.Next()) {
+    const Handle(Interface_Check)& check = checks.Value();
+    for (int i = 1; i <= check->NbFails() && shown < 5; ++i, ++shown) {
+      if (std::string_view(check->CFail(i)).find("NOT AVAILABLE") != std::string_view::npos) continue;
+      std::string where;
+      const int number = checks.Number();
+      if (number > 0 && !model.IsNull() && number <= model->NbEntities())
+      {
+        const Handle(TCollection_HAsciiString) label = model->StringLabel(model->Value(number));
+        where = "entity " + (label.IsNull() ? std::to_string(number) : std::string(label->ToCString()));
+      }
+      else if (number > 0)
+        where = "entity " + std::to_string(number);
+      out += "; " + (where.empty() ? std::string() : where + ": ") + check->CFail(i);
+    }
+  }
+  return out;
+}
+
+std::string status_text(IFSelect_ReturnStatus s) {
+  switch (s) {
+    case IFSelect_RetVoid: return "nothing to read";
+    case IFSelect_RetDone: return "done";
+    case IFSelect_RetError: return "syntax error or unreadable file";
+    case IFSelect_RetFail: return "read failed";
+    case IFSelect_RetStop: return "read stopped";
+  }
+  return "unknown status";
+}
+
+const XSControl_Reader& base_reader(const STEPCAFControl_Reader& r) { return r.Reader(); }
+const XSControl_Reader& base_reader(const IGESCAFControl_Reader& r) { return r; }
+
+template <class Reader>
+Result<bool> read_xcaf(const ReadContext& ctx, const char* format, Handle(TDocStd_Document)& doc,
+                       std::vector<Instance>& instances) {
+  doc = new TDocStd_Document("XmlXCAF");
+  std::lock_guard<std::mutex> lock(xstep_mutex());
+  Reader reader;
+  reader.SetNameMode(true);
+  reader.SetColorMode(false);
+  reader.SetLayerMode(false);
+  Handle(FailCollector) collector = new FailCollector;
+  const Handle(Message_Messenger)& messenger = Message::DefaultMessenger();
+  messenger->AddPrinter(collector);
+  IFSelect_ReturnStatus status = IFSelect_RetFail;
+  try {
+    status = reader.ReadFile(ctx.file.string().c_str());
+  } catch (...) {
+    messenger->RemovePrinter(collector);
+    throw;
+  }
+  messenger->RemovePrinter(collector);
+  if (status != IFSelect_RetDone) {
+    std::string details;
+    for (const std::string& f : collector->fails) details += "; " + f;
+    return file_error(ctx.display, std::string(format) + " " + status_text(status) + details +
+                                       check_messages(base_reader(reader)));
+  }
+  if (!reader.Transfer(doc))
+    return file_error(ctx.display, std::string(format) + " transfer to shapes failed" + check_messages(base_reader(reader)));
+  Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_LabelSequence roots;
+  tool->GetFreeShapes(roots);
+  for (int i = 1; i <= roots.Length(); ++i)
+    collect_instances(tool, roots.Value(i), TopLoc_Location(), label_name(roots.Value(i)), instances);
+  return true;
+}
+
+// .brep: one part per solid, plus one for faces that belong to no solid (surface models).
+void brep_instances(const TopoDS_Shape& shape, const std::string& stem, std::vector<Instance>& out) {
+  int solids = 0;
+  for (TopExp_Explorer ex(shape, TopAbs_SOLID); ex.More(); ex.Next())
+    out.push_back({ex.Current(), stem + "_solid" + std::to_string(++solids)});
+  BRep_Builder builder;
+  TopoDS_Compound loose;
+  builder.MakeCompound(loose);
+  bool any = false;
+  for (TopExp_Explorer ex(shape, TopAbs_FACE, TopAbs_SOLID); ex.More(); ex.Next()) {
+    builder.Add(loose, ex.Current());
+    any = true;
+  }
+  if (any) out.push_back({loose, solids == 0 ? stem : stem + "_faces"});
+  if (solids == 1 && !any) out.back().name = stem;
+}
+
+// IGES is made of 80-column records; column 73 names the section (Start, Global, Directory,
+// Parameter, Terminate) and the Terminate record holds each section's line count. OCCT's IGES
+// reader can crash on truncated files, so the structure is checked first.
+std::string check_iges(const std::string& bytes) {
+  const std::string letters = "SGDPT";
+  std::array<long long, 5> counts{};
+  int last = 0;
+  std::string terminate;
+  std::vector<std::pair<int, std::string>> directory_first_lines;  // (line number, record)
+  std::size_t pos = 0;
+  int line_no = 0;
+  while (pos < bytes.size()) {
+    std::size_t end = bytes.find('\n', pos);
+    if (end == std::string::npos) end = bytes.size();
+    std::string line = bytes.substr(pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(' ') == std::string::npos) continue;
+    const std::string at = "line " + std::to_string(line_no) + ": ";
+    if (line.size() < 73) return at + "IGES records are 80 columns wide, this one has " + std::to_string(line.size());
+    const std::size_t section = letters.find(line[72]);
+    if (line[72] == 'C') return at + "compressed IGES is not supported";
+    if (section == std::string::npos) return at + "unknown IGES section letter '" + std::string(1, line[72]) + "' in column 73";
+    if (static_cast<int>(section) < last)
+      return at + "section '" + std::string(1, line[72]) + "' after section '" + std::string(1, letters[last]) + "'";
+    last = static_cast<int>(section);
+    if (section == 2 && counts[2] % 2 == 0) directory_first_lines.emplace_back(line_no, line);
+    if (section == 4) terminate = line;
+    ++counts[section];
+  }
+  if (counts[4] == 0) return "truncated IGES file: no terminate (T) section";
+  for (int s = 0; s < 4; ++s) {
+    // Fixed columns: "S" + 7 digits, "G" + 7, "D" + 7, "P" + 7 (digits may be space-padded).
+    const std::size_t at = 8 * static_cast<std::size_t>(s);
+    if (terminate[at] != letters[static_cast<std::size_t>(s)]) return "malformed IGES terminate section";
+    long long declared = 0;
+    std::string digits = terminate.substr(at + 1, 7);
+    digits.erase(0, digits.find_first_not_of(' '));
+    if (std::from_chars(digits.data(), digits.data() + digits.size(), declared).ec != std::errc())
+      return "malformed IGES terminate section";
+    if (declared != counts[static_cast<std::size_t>(s)])
+      return "truncated IGES file: terminate section says section " + std::string(1, letters[static_cast<std::size_t>(s)]) +
+             " has " + std::to_string(declared) + " lines, file holds " + std::to_string(counts[static_cast<std::size_t>(s)]);
+  }
+  if (counts[2] % 2 != 0) return "malformed IGES file: odd number of directory lines";
+  for (const auto& [line_no, record] : directory_first_lines) {
+    long long pointer = 0;
+    std::string field = record.substr(8, 8);
+    field.erase(0, field.find_first_not_of(' '));
+    if (std::from_chars(field.data(), field.data() + field.size(), pointer).ec != std::errc() || pointer < 1 ||
+        pointer > counts[3])
+      return "line " + std::to_string(line_no) + ": directory entry points to parameter line '" + field + "' of " +
+             std::to_string(counts[3]);
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
+  const std::string ext = lower(ctx.file.extension().string());
+  const ImportOptions& opt = *ctx.options;
+  const std::string stem = ctx.file.stem().string();
+  try {
+    std::vector<Instance> instances;
+    double output_per_shape_unit = ctx.file_to_output;  // .brep carries no unit
+    Handle(TDocStd_Document) doc_holder;
+    if (ext == ".brep") {
+      Result<std::string> bytes = read_file_bytes(ctx.file, ctx.display);
+      if (!bytes) return bytes.error();
+      // OCCT's .brep parser loops forever on a truncated stream that merely sets failbit; make
+      // every failed extraction throw instead.
+      std::istringstream in(*bytes);
+      in.exceptions(std::ios::failbit | std::ios::badbit);
+      TopoDS_Shape shape;
+      BRep_Builder builder;
+      try {
+        BRepTools::Read(shape, in, builder);
+      } catch (const std::ios_base::failure&) {
+        return file_error(ctx.display, "not a readable OCCT .brep file: malformed or truncated");
+      }
+      if (shape.IsNull()) return file_error(ctx.display, "not a readable OCCT .brep file");
+      brep_instances(shape, stem, instances);
+    } else {
+      const bool step = ext == ".step" || ext == ".stp";
+      if (!step) {
+        Result<std::string> bytes = read_file_bytes(ctx.file, ctx.display);
+        if (!bytes) return bytes.error();
+        if (std::string err = check_iges(*bytes); !err.empty()) return file_error(ctx.display, err);
+      }
+      Result<bool> r = step ? read_xcaf<STEPCAFControl_Reader>(ctx, "STEP", doc_holder, instances)
+                            : read_xcaf<IGESCAFControl_Reader>(ctx, "IGES", doc_holder, instances);
+      if (!r) return r.error();
+      // The readers convert the file's declared unit into the document's length unit (OCCT's
+      // session unit, "xstep.cascade.unit", when the document has none).
+      double mm_per_shape_unit = UnitsMethods::GetCasCadeLengthUnit(UnitsMethods_LengthUnit_Millimeter);
+      if (double doc_unit = 0.0; XCAFDoc_DocumentTool::GetLengthUnit(doc_holder, doc_unit, UnitsMethods_LengthUnit_Millimeter) &&
+                                 doc_unit > 0.0)
+        mm_per_shape_unit = doc_unit;
+      output_per_shape_unit = mm_per_shape_unit * 1e-3 / ctx.metres_per_output;
+    }
+    if (instances.empty()) return file_error(ctx.display, "contains no shapes");
+
+    // Mesh every distinct part once; instances share the triangulation of their faces.
+    BRep_Builder builder;
+    TopoDS_Compound prototypes;
+    builder.MakeCompound(prototypes);
+    TopTools_MapOfShape seen;
+    for (const Instance& inst : instances) {
+      const TopoDS_Shape proto = inst.shape.Located(TopLoc_Location());
+      if (seen.Add(proto)) builder.Add(prototypes, proto);
+    }
+    IMeshTools_Parameters params;
+    params.Deflection = opt.linear_deflection / output_per_shape_unit;
+    params.Angle = opt.angular_deflection;
+    params.InParallel = Standard_True;
+    // Explicit, so that the CSF_MeshAlgo environment variable cannot change the result.
+    params.MeshAlgo = IMeshTools_MeshAlgoType_Watson;
+    BRepMesh_IncrementalMesh mesher(prototypes, params);
+    if (!mesher.IsDone()) return file_error(ctx.display, "BRepMesh failed to tessellate the shapes");
+
+    std::size_t untriangulated = 0;
+    for (Instance& inst : instances) {
+      TriangleSoup soup;
+      soup.name = inst.name.empty() ? stem : inst.name;
+      for (TopExp_Explorer ex(inst.shape, TopAbs_FACE); ex.More(); ex.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(ex.Current());
+        TopLoc_Location loc;
+        const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
+        if (tri.IsNull()) {
+          ++untriangulated;
+          continue;
+        }
+        const gp_Trsf trsf = loc.Transformation();
+        const bool reversed = face.Orientation() == TopAbs_REVERSED;
+        for (int i = 1; i <= tri->NbTriangles(); ++i) {
+          int n[3];
+          tri->Triangle(i).Get(n[0], n[1], n[2]);
+          if (reversed) std::swap(n[1], n[2]);
+          Triangle t;
+          for (int v = 0; v < 3; ++v) {
+            const gp_Pnt p = tri->Node(n[v]).Transformed(trsf);
+            t[v] = output_per_shape_unit * Vec3(p.X(), p.Y(), p.Z());
+          }
+          soup.triangles.push_back(t);
+        }
+      }
+      parts.push_back(std::move(soup));
+    }
+    if (untriangulated > 0)
+      ctx.warnings->push_back(ctx.display + ": " + std::to_string(untriangulated) +
+                              " face instance(s) could not be tessellated by BRepMesh and are left out");
+  } catch (const Standard_Failure& e) {
+    return file_error(ctx.display, std::string("OpenCASCADE: ") + e.GetMessageString());
+  } catch (const std::exception& e) {
+    return file_error(ctx.display, std::string("OpenCASCADE: ") + e.what());
+  }
+  return true;
+}
+
+}  // namespace swept::io_detail

@@ -1,0 +1,215 @@
+// import_mesh(): unit handling, format dispatch and the checks every format shares
+// (non-finite coordinates, empty results, degenerate-triangle counting); write_stl_binary().
+#include "swept/io/mesh_io.h"
+
+#include "import_detail.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <system_error>
+
+namespace swept {
+
+namespace {
+
+struct UnitEntry {
+  std::string_view name;
+  double metres;
+};
+
+constexpr std::array<UnitEntry, 6> kUnits{{
+    {"m", 1.0}, {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6}, {"in", 0.0254}, {"ft", 0.3048}}};
+
+std::string accepted_units() {
+  std::string s;
+  for (const UnitEntry& u : kUnits) {
+    if (!s.empty()) s += ", ";
+    s += u.name;
+  }
+  return s;
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+
+// Relative threshold on shape_quality() (2·area / longest edge²) below which a triangle counts
+// as degenerate: exact zero-area triangles read from float data land around 1e-16 after the
+// unit conversion, while real CAD slivers (aspect ratio up to ~1e6) stay far above it.
+constexpr double kDegenerateQuality = 1e-12;
+
+void put_u32(std::string& out, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
+}
+
+void put_f32(std::string& out, float f) { put_u32(out, std::bit_cast<std::uint32_t>(f)); }
+
+}  // namespace
+
+bool unit_scale(std::string_view unit, double& metres_per_unit) {
+  for (const UnitEntry& u : kUnits) {
+    if (u.name == unit) {
+      metres_per_unit = u.metres;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::size_t ImportedModel::triangle_count() const {
+  std::size_t n = 0;
+  for (const TriangleSoup& p : parts) n += p.triangles.size();
+  return n;
+}
+
+TriangleSoup ImportedModel::merged() const {
+  TriangleSoup all;
+  all.name = std::filesystem::path(file).stem().string();
+  all.triangles.reserve(triangle_count());
+  for (const TriangleSoup& p : parts) all.triangles.insert(all.triangles.end(), p.triangles.begin(), p.triangles.end());
+  return all;
+}
+
+namespace io_detail {
+
+Result<std::string> read_file_bytes(const std::filesystem::path& file, const std::string& display) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return file_error(display, "cannot open file for reading");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return file_error(display, "read error");
+  return bytes;
+}
+
+}  // namespace io_detail
+
+Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options) {
+  using io_detail::file_error;
+  const std::string display = file.string();
+
+  double metres_per_output = 0.0;
+  if (!unit_scale(options.unit, metres_per_output))
+    return file_error(display, "unknown output unit '" + options.unit + "' (accepted: " + accepted_units() + ")");
+
+  const std::string ext = lower(file.extension().string());
+  const bool is_cad = ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep";
+  const bool is_assimp = ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".gltf" || ext == ".glb" ||
+                         ext == ".dae";
+  const bool is_stl = ext == ".stl";
+  if (!is_cad && !is_assimp && !is_stl)
+    return file_error(display, "unknown format '" + (ext.empty() ? std::string("(no extension)") : ext) +
+                                   "' (accepted: .stl .obj .ply .off .gltf .glb .dae .step .stp .iges .igs .brep)");
+
+  // glTF and COLLADA coordinates are metres (glTF by its spec; assimp applies COLLADA's <unit>).
+  std::string file_unit = options.file_unit;
+  if (file_unit.empty()) file_unit = (ext == ".gltf" || ext == ".glb" || ext == ".dae") ? "m" : "mm";
+  double metres_per_file = 0.0;
+  if (!unit_scale(file_unit, metres_per_file))
+    return file_error(display, "unknown file unit '" + file_unit + "' (accepted: " + accepted_units() + ")");
+
+  if (is_cad) {
+    if (!(options.linear_deflection > 0.0) || !std::isfinite(options.linear_deflection))
+      return file_error(display, "linear deflection must be a positive finite length, got " +
+                                     std::to_string(options.linear_deflection));
+    if (!(options.angular_deflection > 0.0) || !std::isfinite(options.angular_deflection))
+      return file_error(display, "angular deflection must be a positive finite angle in radians, got " +
+                                     std::to_string(options.angular_deflection));
+  }
+
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (!std::filesystem::exists(status)) return file_error(display, "no such file");
+  if (std::filesystem::is_directory(status)) return file_error(display, "is a directory, not a file");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) return file_error(display, "cannot read file size: " + ec.message());
+  if (size == 0) return file_error(display, "file is empty");
+
+  io_detail::ReadContext ctx;
+  ctx.file = file;
+  ctx.display = display;
+  ctx.file_to_output = metres_per_file / metres_per_output;
+  ctx.metres_per_output = metres_per_output;
+  ctx.options = &options;
+
+  ImportedModel model;
+  model.file = display;
+  model.unit = options.unit;
+  ctx.warnings = &model.warnings;
+  Result<bool> read = is_stl ? io_detail::read_stl(ctx, model.parts)
+                      : is_assimp ? io_detail::read_with_assimp(ctx, model.parts)
+                                  : io_detail::read_cad(ctx, model.parts);
+  if (!read) return read.error();
+
+  // Drop parts without triangles (empty solids, point clouds); a file without any is an error.
+  std::erase_if(model.parts, [](const TriangleSoup& p) { return p.triangles.empty(); });
+  if (model.parts.empty()) return file_error(display, "contains no triangles");
+
+  // Part names are unique: repeats (assembly instances, meshes sharing a node) get "#2", "#3", ...
+  std::map<std::string, int> name_uses;
+  for (TriangleSoup& part : model.parts) {
+    const int use = ++name_uses[part.name];
+    if (use > 1) part.name += "#" + std::to_string(use);
+  }
+
+  for (const TriangleSoup& part : model.parts) {
+    for (std::size_t i = 0; i < part.triangles.size(); ++i) {
+      const Triangle& t = part.triangles[i];
+      if (!finite(t.p) || !finite(t.q) || !finite(t.r)) {
+        std::string where = model.parts.size() > 1 ? "part '" + part.name + "' " : std::string();
+        return file_error(display, where + "triangle " + std::to_string(i) + " has a non-finite coordinate");
+      }
+      if (shape_quality(t) <= kDegenerateQuality) ++model.degenerate_triangles;
+    }
+  }
+  return model;
+}
+
+Result<bool> write_stl_binary(const std::filesystem::path& file, const TriangleSoup& soup) {
+  using io_detail::file_error;
+  const std::string display = file.string();
+  if (soup.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    return file_error(display, "too many triangles for a binary STL (" + std::to_string(soup.triangles.size()) + ")");
+
+  std::string out;
+  out.reserve(84 + 50 * soup.triangles.size());
+  // The header must not start with "solid", or readers may take the file for ASCII STL.
+  std::array<char, 80> header{};
+  const std::string title = "binary STL written by swept: " + soup.name;
+  std::memcpy(header.data(), title.data(), std::min(title.size(), header.size()));
+  out.append(header.data(), header.size());
+  put_u32(out, static_cast<std::uint32_t>(soup.triangles.size()));
+
+  for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
+    const Triangle& t = soup.triangles[i];
+    if (!finite(t.p) || !finite(t.q) || !finite(t.r))
+      return file_error(display, "triangle " + std::to_string(i) + " has a non-finite coordinate; nothing written");
+    Vec3 n = (t.q - t.p).cross(t.r - t.p);
+    const double len = n.norm();
+    n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
+    for (int k = 0; k < 3; ++k) put_f32(out, static_cast<float>(n[k]));
+    for (int v = 0; v < 3; ++v)
+      for (int k = 0; k < 3; ++k) put_f32(out, static_cast<float>(t[v][k]));
+    out.push_back('\0');
+    out.push_back('\0');
+  }
+
+  std::ofstream f(file, std::ios::binary | std::ios::trunc);
+  if (!f) return file_error(display, "cannot open file for writing");
+  f.write(out.data(), static_cast<std::streamsize>(out.size()));
+  f.close();
+  if (!f) return file_error(display, "write failed");
+  return true;
+}
+
+}  // namespace swept

@@ -1,0 +1,428 @@
+// Mesh formats: STL (ASCII, binary), OBJ, PLY, OFF, glTF, COLLADA; errors; units; degenerates.
+#include "import_test_util.h"
+#include "support/test_support.h"
+
+#include "swept/io/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace swept::test {
+namespace {
+
+constexpr const char* kAsciiStl =
+    "solid plate\n"
+    "  facet normal 0 0 1\n"
+    "    outer loop\n"
+    "      vertex 0 0 0\n"
+    "      vertex 1.5 0 0\n"
+    "      vertex 0 2.25 0\n"
+    "    endloop\n"
+    "  endfacet\n"
+    "  facet normal 0 0 1\n"
+    "    outer loop\n"
+    "      vertex 1.5 0 0\n"
+    "      vertex 1.5 2.25 0.1234567890123\n"
+    "      vertex 0 2.25 0\n"
+    "    endloop\n"
+    "  endfacet\n"
+    "endsolid plate\n";
+
+ImportOptions with_units(const std::string& unit, const std::string& file_unit = "") {
+  ImportOptions o;
+  o.unit = unit;
+  o.file_unit = file_unit;
+  return o;
+}
+
+void expect_vec(const Vec3& v, double x, double y, double z, double tol = 0.0) {
+  EXPECT_NEAR(v.x(), x, tol);
+  EXPECT_NEAR(v.y(), y, tol);
+  EXPECT_NEAR(v.z(), z, tol);
+}
+
+TEST(ImportStl, AsciiCoordinatesInDoublePrecision) {
+  const auto file = write_file(scratch_dir() / "plate.stl", kAsciiStl);
+  const auto model = import_mesh(file);
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->parts.size(), 1u);
+  EXPECT_EQ(model->parts[0].name, "plate");
+  ASSERT_EQ(model->triangle_count(), 2u);
+  const auto& t = model->parts[0].triangles;
+  expect_vec(t[0].p, 0, 0, 0);
+  expect_vec(t[0].q, 1.5, 0, 0);
+  expect_vec(t[0].r, 0, 2.25, 0);
+  // Exactly the double nearest to the text, not a float round trip.
+  EXPECT_EQ(t[1].q.z(), 0.1234567890123);
+  EXPECT_EQ(model->degenerate_triangles, 0u);
+  EXPECT_EQ(model->unit, "mm");
+}
+
+TEST(ImportStl, AsciiSeveralSolidsGiveSeveralParts) {
+  std::string text = kAsciiStl;
+  std::string second = kAsciiStl;
+  second.replace(second.find("plate"), 5, "lid");
+  const auto file = write_file(scratch_dir() / "two.stl", text + second);
+  const auto model = import_mesh(file);
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->parts.size(), 2u);
+  EXPECT_EQ(model->parts[0].name, "plate");
+  EXPECT_EQ(model->parts[1].name, "lid");
+  EXPECT_EQ(model->triangle_count(), 4u);
+  EXPECT_EQ(model->merged().triangles.size(), 4u);
+  EXPECT_EQ(model->merged().name, "two");
+}
+
+TEST(ImportStl, BinaryRoundTripAndDeterministicBytes) {
+  const auto dir = scratch_dir();
+  TriangleSoup box{"box", box_triangles(Vec3(-1, -2, -3), Vec3(4, 5.5, 6.25))};
+  ASSERT_TRUE(write_stl_binary(dir / "a.stl", box).ok());
+  ASSERT_TRUE(write_stl_binary(dir / "b.stl", box).ok());
+  const std::string a = read_bytes(dir / "a.stl");
+  EXPECT_EQ(a, read_bytes(dir / "b.stl"));
+  ASSERT_EQ(a.size(), 84u + 50u * 12u);
+  EXPECT_NE(a.compare(0, 5, "solid"), 0);
+
+  const auto model = import_mesh(dir / "a.stl");
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 12u);
+  EXPECT_EQ(model->parts[0].name, "a");
+  for (std::size_t i = 0; i < 12; ++i)
+    for (int v = 0; v < 3; ++v) EXPECT_EQ(model->parts[0].triangles[i][v], box.triangles[i][v]) << i;
+}
+
+TEST(ImportStl, BinaryWithSolidHeaderIsStillBinary) {
+  const auto dir = scratch_dir();
+  TriangleSoup box{"box", box_triangles(Vec3(0, 0, 0), Vec3(1, 1, 1))};
+  ASSERT_TRUE(write_stl_binary(dir / "b.stl", box).ok());
+  std::string bytes = read_bytes(dir / "b.stl");
+  std::memcpy(bytes.data(), "solid exported by some CAD", 26);
+  const auto model = import_mesh(write_file(dir / "solid_header.stl", bytes));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  EXPECT_EQ(model->triangle_count(), 12u);
+}
+
+TEST(ImportStl, TruncatedBinaryIsReported) {
+  const auto dir = scratch_dir();
+  TriangleSoup box{"box", box_triangles(Vec3(0, 0, 0), Vec3(1, 1, 1))};
+  ASSERT_TRUE(write_stl_binary(dir / "full.stl", box).ok());
+  std::string bytes = read_bytes(dir / "full.stl");
+  bytes.resize(bytes.size() - 30);
+  const auto file = write_file(dir / "cut.stl", bytes);
+  expect_error(import_mesh(file), {file.string(), "truncated binary STL: header says 12 triangles, file holds 11"});
+
+  const auto tiny = write_file(dir / "tiny.stl", std::string(40, '\x01'));
+  expect_error(import_mesh(tiny), {tiny.string(), "truncated binary STL"});
+}
+
+TEST(ImportStl, NonFiniteBinaryCoordinateNamesTheTriangle) {
+  const auto dir = scratch_dir();
+  TriangleSoup box{"box", box_triangles(Vec3(0, 0, 0), Vec3(1, 1, 1))};
+  box.triangles[3].q.y() = 7.0;
+  ASSERT_TRUE(write_stl_binary(dir / "ok.stl", box).ok());
+  std::string bytes = read_bytes(dir / "ok.stl");
+  // Triangle 3, vertex q, y coordinate: header 84 + 3 records + normal 12 + p 12 + x 4.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(bytes.data() + 84 + 3 * 50 + 12 + 12 + 4, &nan, 4);
+  const auto file = write_file(dir / "nan.stl", bytes);
+  expect_error(import_mesh(file), {file.string(), "triangle 3 has a non-finite coordinate"});
+}
+
+TEST(ImportStl, WriterRefusesNonFiniteInput) {
+  TriangleSoup soup{"bad", box_triangles(Vec3(0, 0, 0), Vec3(1, 1, 1))};
+  soup.triangles[5].r.x() = std::numeric_limits<double>::infinity();
+  const auto file = scratch_dir() / "bad.stl";
+  expect_error(write_stl_binary(file, soup), {file.string(), "triangle 5"});
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+TEST(ImportStl, MalformedAsciiNamesTheLine) {
+  const auto dir = scratch_dir();
+  std::string text = kAsciiStl;
+  text.replace(text.find("vertex 1.5 0 0"), 14, "vertex 1.5 0");  // line 5
+  const auto f1 = write_file(dir / "short.stl", text);
+  expect_error(import_mesh(f1), {f1.string(), "line 5", "3 coordinates"});
+
+  text = kAsciiStl;
+  text.replace(text.find("2.25 0\n"), 6, "2.2x5 0");  // line 6
+  const auto f2 = write_file(dir / "number.stl", text);
+  expect_error(import_mesh(f2), {f2.string(), "line 6", "malformed number '2.2x5'"});
+
+  text = kAsciiStl;
+  text.replace(text.find("endloop"), 7, "endlop");  // line 7
+  const auto f3 = write_file(dir / "keyword.stl", text);
+  expect_error(import_mesh(f3), {f3.string(), "line 7", "expected 'endloop'"});
+
+  text = kAsciiStl;
+  text.resize(text.find("endsolid"));
+  const auto f4 = write_file(dir / "open.stl", text);
+  expect_error(import_mesh(f4), {f4.string(), "no 'endsolid'"});
+
+  text = kAsciiStl;
+  text.resize(text.find("    endloop"));  // ends inside facet 0 after its vertices
+  const auto f5 = write_file(dir / "cut.stl", text);
+  expect_error(import_mesh(f5), {f5.string(), "unexpected end of file"});
+}
+
+TEST(ImportStl, NonFiniteAsciiCoordinateNamesLineAndTriangle) {
+  std::string text = kAsciiStl;
+  text.replace(text.find("vertex 1.5 2.25"), 15, "vertex 1.5 nan");  // line 12, triangle 1
+  const auto file = write_file(scratch_dir() / "nan.stl", text);
+  expect_error(import_mesh(file), {file.string(), "line 12", "triangle 1 has a non-finite coordinate"});
+  std::string inf = kAsciiStl;
+  inf.replace(inf.find("vertex 0 0 0"), 12, "vertex 0 -inf 0");  // line 4, triangle 0
+  const auto file2 = write_file(scratch_dir() / "inf.stl", inf);
+  expect_error(import_mesh(file2), {"line 4", "triangle 0 has a non-finite coordinate"});
+}
+
+TEST(ImportStl, DegenerateTrianglesAreKeptAndCounted) {
+  const std::string text =
+      "solid d\n"
+      "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+      "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 1 1\nvertex 3 3 3\nendloop\nendfacet\n"
+      "facet normal 0 0 0\nouter loop\nvertex 2 2 2\nvertex 2 2 2\nvertex 5 1 0\nendloop\nendfacet\n"
+      "facet normal 0 0 0\nouter loop\nvertex 4 4 4\nvertex 4 4 4\nvertex 4 4 4\nendloop\nendfacet\n"
+      "endsolid d\n";
+  const auto model = import_mesh(write_file(scratch_dir() / "degenerate.stl", text));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  EXPECT_EQ(model->triangle_count(), 4u);
+  EXPECT_EQ(model->degenerate_triangles, 3u);
+}
+
+TEST(ImportObj, QuadsAreTriangulatedAndCoordinatesKept) {
+  const std::string text =
+      "# a unit square as a quad and a triangle above it\n"
+      "o sheet\n"
+      "v 0 0 0\n"
+      "v 2 0 0\n"
+      "v 2 3 0\n"
+      "v 0 3 0\n"
+      "v 1 1.5 4.5\n"
+      "f 1 2 3 4\n"
+      "f 1/1 2/2 -1\n";
+  const auto model = import_mesh(write_file(scratch_dir() / "sheet.obj", text));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 3u);
+  const TriangleSoup all = model->merged();
+  double total_area = 0.0;
+  Aabb box = bounds(all.triangles);
+  for (const Triangle& t : all.triangles) total_area += area(t);
+  expect_vec(box.min, 0, 0, 0);
+  expect_vec(box.max, 2, 3, 4.5);
+  const double tri_area = 0.5 * Vec3(2, 0, 0).cross(Vec3(1, 1.5, 4.5)).norm();
+  EXPECT_NEAR(total_area, 6.0 + tri_area, 1e-9);
+}
+
+TEST(ImportObj, DegenerateFacesAreKeptAndCounted) {
+  const auto model = import_mesh(write_file(scratch_dir() / "d.obj",
+                                            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 2\nf 1 2 4\nf 3 3 3\n"));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  EXPECT_EQ(model->triangle_count(), 4u);
+  EXPECT_EQ(model->degenerate_triangles, 3u);
+}
+
+TEST(ImportObj, MalformedAndNonFiniteNameTheLine) {
+  const auto dir = scratch_dir();
+  const auto f1 = write_file(dir / "bad_number.obj", "v 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n");
+  expect_error(import_mesh(f1), {f1.string(), "line 2", "malformed number 'abc'"});
+  const auto f2 = write_file(dir / "nan.obj", "v 0 0 0\nv 1 0 0\n\nv 0 NaN 0\nf 1 2 3\n");
+  expect_error(import_mesh(f2), {f2.string(), "line 4", "non-finite"});
+  const auto f3 = write_file(dir / "index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  expect_error(import_mesh(f3), {f3.string(), "line 4", "vertex 9"});
+  const auto f4 = write_file(dir / "short.obj", "v 0 0\n");
+  expect_error(import_mesh(f4), {f4.string(), "line 1", "3 coordinates"});
+}
+
+TEST(ImportPly, AsciiPly) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n4 0 0\n4 2 0\n0 2 1\n3 0 1 2\n3 0 2 3\n";
+  const auto model = import_mesh(write_file(scratch_dir() / "quad.ply", text));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 2u);
+  const Aabb box = bounds(model->merged().triangles);
+  expect_vec(box.min, 0, 0, 0);
+  expect_vec(box.max, 4, 2, 1);
+}
+
+TEST(ImportPly, TruncatedAndMalformedPlyAreErrors) {
+  const auto dir = scratch_dir();
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  // Cut inside the face list (assimp loops forever on this one).
+  const auto cut = write_file(dir / "cut.ply", header + "0 0 0\n4 0 0\n4 2 0\n0 2 1\n3 0 1");
+  expect_error(import_mesh(cut), {cut.string(), "line 14", "fewer than its 3 values"});
+  const auto missing = write_file(dir / "missing.ply", header + "0 0 0\n4 0 0\n");
+  expect_error(import_mesh(missing), {missing.string(), "unexpected end of file", "'vertex' 2 of 4"});
+  const auto nan = write_file(dir / "nan.ply", header + "0 0 0\n4 nan 0\n4 2 0\n0 2 1\n3 0 1 2\n3 0 2 3\n");
+  expect_error(import_mesh(nan), {nan.string(), "line 11", "non-finite"});
+
+  // Binary: 4 vertices of 3 floats, then faces; cut in the middle of the second face.
+  std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const float v[12] = {0, 0, 0, 4, 0, 0, 4, 2, 0, 0, 2, 1};
+  bin.append(reinterpret_cast<const char*>(v), sizeof v);
+  for (const std::int32_t f : {0, 1, 2, 0, 2, 3}) {
+    if (f == 0) bin.push_back('\x03');
+    bin.append(reinterpret_cast<const char*>(&f), 4);
+  }
+  const auto whole = import_mesh(write_file(dir / "whole.ply", bin));
+  ASSERT_TRUE(whole.ok()) << whole.error().message;
+  EXPECT_EQ(whole->triangle_count(), 2u);
+  const auto short_bin = write_file(dir / "short_bin.ply", bin.substr(0, bin.size() - 5));
+  expect_error(import_mesh(short_bin), {short_bin.string(), "truncated binary PLY", "'face' 1 of 2"});
+}
+
+TEST(ImportOff, TetrahedronAndErrors) {
+  const auto dir = scratch_dir();
+  const std::string text = "OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const auto model = import_mesh(write_file(dir / "tet.off", text));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 4u);
+  double total_area = 0.0;
+  for (const Triangle& t : model->merged().triangles) total_area += area(t);
+  EXPECT_NEAR(total_area, 1.5 + std::sqrt(3.0) / 2.0, 1e-12);
+
+  const auto bad = write_file(dir / "bad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\ninf 1 0\n0 0 1\n3 0 1 2\n");
+  expect_error(import_mesh(bad), {bad.string(), "line 5", "non-finite"});
+  const auto cut = write_file(dir / "cut.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n");
+  expect_error(import_mesh(cut), {cut.string(), "unexpected end of file"});
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    std::uint32_t n = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) n |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size()) n |= static_cast<unsigned char>(bytes[i + 2]);
+    out.push_back(abc[(n >> 18) & 63]);
+    out.push_back(abc[(n >> 12) & 63]);
+    out.push_back(i + 1 < bytes.size() ? abc[(n >> 6) & 63] : '=');
+    out.push_back(i + 2 < bytes.size() ? abc[n & 63] : '=');
+  }
+  return out;
+}
+
+TEST(ImportGltf, EmbeddedTriangleInMetresBecomesMillimetres) {
+  const float xyz[9] = {0.f, 0.f, 0.f, 0.5f, 0.f, 0.f, 0.f, 0.25f, 0.125f};
+  const std::string buffer(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+      R"("nodes":[{"mesh":0,"name":"wing","translation":[1.0,0.0,0.0]}],)"
+      R"("meshes":[{"name":"wing","primitives":[{"attributes":{"POSITION":0},"mode":4}]}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+      R"("min":[0,0,0],"max":[0.5,0.25,0.125]}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+      R"("buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)" +
+      base64(buffer) + R"("}]})";
+  const auto model = import_mesh(write_file(scratch_dir() / "wing.gltf", json));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 1u);
+  EXPECT_EQ(model->parts[0].name, "wing");
+  const Triangle& t = model->parts[0].triangles[0];
+  expect_vec(t.p, 1000, 0, 0, 1e-9);
+  expect_vec(t.q, 1500, 0, 0, 1e-9);
+  expect_vec(t.r, 1000, 250, 125, 1e-9);
+}
+
+TEST(ImportGltf, BinaryGlb) {
+  const float xyz[9] = {0.f, 0.f, 0.f, 0.002f, 0.f, 0.f, 0.f, 0.004f, 0.f};
+  const std::string bin(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0,"name":"tab"}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[0.002,0.004,0]}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36}]})";
+  while (json.size() % 4 != 0) json.push_back(' ');
+  auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::uint32_t total = 12 + 8 + static_cast<std::uint32_t>(json.size()) + 8 + 36;
+  const std::string glb = "glTF" + u32(2) + u32(total) + u32(static_cast<std::uint32_t>(json.size())) + "JSON" + json +
+                          u32(36) + std::string("BIN\0", 4) + bin;
+  const auto model = import_mesh(write_file(scratch_dir() / "tab.glb", glb));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 1u);
+  const Aabb box = bounds(model->merged().triangles);
+  expect_vec(box.max, 2, 4, 0, 1e-6);
+
+  const auto bad = write_file(scratch_dir() / "bad.glb", glb.substr(0, 40));
+  expect_error(import_mesh(bad), {bad.string(), "assimp"});
+}
+
+TEST(ImportCollada, UnitAndZUpAreRespected) {
+  const std::string dae = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="millimeter" meter="0.001"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries>
+    <geometry id="g" name="bracket">
+      <mesh>
+        <source id="g-pos">
+          <float_array id="g-pos-array" count="12">0 0 0 10 0 0 0 20 0 0 0 30</float_array>
+          <technique_common><accessor source="#g-pos-array" count="4" stride="3">
+            <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+          </accessor></technique_common>
+        </source>
+        <vertices id="g-vtx"><input semantic="POSITION" source="#g-pos"/></vertices>
+        <triangles count="2"><input semantic="VERTEX" source="#g-vtx" offset="0"/><p>0 1 2 0 1 3</p></triangles>
+      </mesh>
+    </geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="s"><node id="n" name="bracket"><instance_geometry url="#g"/></node></visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+)";
+  const auto model = import_mesh(write_file(scratch_dir() / "bracket.dae", dae));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  ASSERT_EQ(model->triangle_count(), 2u);
+  const Aabb box = bounds(model->merged().triangles);
+  // assimp applies the <unit> scale in single precision.
+  expect_vec(box.min, 0, 0, 0, 1e-9);
+  expect_vec(box.max, 10, 20, 30, 1e-5);
+}
+
+TEST(ImportErrors, MissingUnknownEmptyAndBadUnit) {
+  const auto dir = scratch_dir();
+  expect_error(import_mesh(dir / "nowhere.stl"), {(dir / "nowhere.stl").string(), "no such file"});
+
+  const auto unknown = write_file(dir / "model.xyz", "1 2 3\n");
+  expect_error(import_mesh(unknown), {unknown.string(), "unknown format '.xyz'", ".stl"});
+
+  for (const char* name : {"empty.stl", "empty.obj", "empty.step", "empty.brep"}) {
+    const auto empty = write_file(dir / name, "");
+    expect_error(import_mesh(empty), {empty.string(), "file is empty"});
+  }
+  const auto blank = write_file(dir / "blank.stl", "solid x\nendsolid x\n");
+  expect_error(import_mesh(blank), {blank.string(), "no triangles"});
+
+  const auto ok = write_file(dir / "plate.stl", kAsciiStl);
+  expect_error(import_mesh(ok, with_units("furlong")), {ok.string(), "unknown output unit 'furlong'", "m, cm, mm, um, in, ft"});
+  expect_error(import_mesh(ok, with_units("mm", "inch")), {"unknown file unit 'inch'", "m, cm, mm, um, in, ft"});
+}
+
+TEST(ImportUnits, ConversionBetweenUnits) {
+  double m = 0.0;
+  ASSERT_TRUE(unit_scale("in", m));
+  EXPECT_EQ(m, 0.0254);
+  EXPECT_FALSE(unit_scale("MM", m));
+
+  const auto file = write_file(scratch_dir() / "plate.stl", kAsciiStl);
+  const auto metres = import_mesh(file, with_units("m"));
+  ASSERT_TRUE(metres.ok()) << metres.error().message;
+  EXPECT_EQ(metres->unit, "m");
+  expect_vec(metres->parts[0].triangles[0].q, 1.5e-3, 0, 0, 1e-18);
+  expect_vec(metres->parts[0].triangles[0].r, 0, 2.25e-3, 0, 1e-18);
+
+  const auto inches = import_mesh(file, with_units("mm", "in"));
+  ASSERT_TRUE(inches.ok()) << inches.error().message;
+  expect_vec(inches->parts[0].triangles[0].q, 1.5 * 25.4, 0, 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace swept::test

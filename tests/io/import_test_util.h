@@ -1,0 +1,49 @@
+#pragma once
+// Helpers for the import tests: a scratch folder per test and file writers.
+#include "swept/io/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace swept::test {
+
+/// A fresh, empty folder for the running test under the build tree.
+inline std::filesystem::path scratch_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir = std::filesystem::path(SWEPT_BINARY_DIR) / "tests_io_scratch" /
+                                    (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Writes `bytes` to `file` and returns the path.
+inline std::filesystem::path write_file(const std::filesystem::path& file, const std::string& bytes) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return file;
+}
+
+inline std::string read_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// The committed CAD fixtures (tests/data/io).
+inline std::filesystem::path fixture(const std::string& name) {
+  return std::filesystem::path(SWEPT_SOURCE_DIR) / "tests" / "data" / "io" / name;
+}
+
+/// Asserts that `result` is an error whose message contains every one of `parts`.
+template <class T>
+void expect_error(const Result<T>& result, std::initializer_list<std::string> parts) {
+  ASSERT_FALSE(result.ok()) << "expected an error";
+  for (const std::string& p : parts)
+    EXPECT_NE(result.error().message.find(p), std::string::npos)
+        << "message '" << result.error().message << "' lacks '" << p << "'";
+}
+
+}  // namespace swept::test
