@@ -607,6 +607,11 @@ PlanResult Planner::run() {
   auto fail = [&](PlanStatus s, std::string msg) {
     r.status = s;
     r.message = std::move(msg);
+    r.nodes_checked = nodes_.size();
+    r.edges_checked = edges_checked_;
+    r.queries.distance = check_.distance_queries.load();
+    r.time_ms.total = elapsed_s() * 1e3;
+    if (r.time_ms.search == 0.0) r.time_ms.search = r.time_ms.total;
     return r;
   };
   if (!in_bounds(ref(pb_.start))) return fail(PlanStatus::invalid_start, "the start's reference point is outside the bounds");
@@ -643,7 +648,6 @@ PlanResult Planner::run() {
     check_.set_contact_model(body_in, obstacle_in);
     Pose escape;
     if (!find_escape(escape)) {
-      r.time_ms.search = elapsed_s() * 1e3;
       return fail(out_of_time() ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
                   "the body starts in contact and no straight escape (along the world axes, the body's axes "
                   "or toward the goal) reaches a pose with the full clearance");
@@ -696,9 +700,6 @@ PlanResult Planner::run() {
         break;
       default: os << "no path found down to the finest grid resolution (step " << step_fine_ << " " << pb_.unit << ")"; break;
     }
-    r.edges_checked = edges_checked_;
-    r.queries.distance = check_.distance_queries.load();
-    r.time_ms.total = elapsed_s() * 1e3;
     return fail(why, os.str());
   }
   // Smoothing after the escape prefix (which stays as it is).
@@ -711,17 +712,22 @@ PlanResult Planner::run() {
 
   // Final certification of every segment, and the smallest distance along the path (exact
   // distance at 32 samples a segment; the certificate guarantees the margin in between).
-  double min_d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i + 1 < full.size(); ++i) {
+  // Segments in parallel, results read in order: the same outcome at any thread count.
+  const std::size_t segments = full.size() - 1;
+  std::vector<char> certified(segments, 0);
+  std::vector<double> seg_min(segments, std::numeric_limits<double>::infinity());
+  tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
     const bool relaxed = i < fixed;
-    if (!check_.certify(full[i], -1, full[i + 1], -1, relaxed)) {
+    certified[i] = check_.certify(full[i], -1, full[i + 1], -1, relaxed) ? 1 : 0;
+    if (relaxed) return;  // the escape from contact is closer than the margin by design
+    for (int k = 0; k <= 32; ++k)
+      seg_min[i] = std::min(seg_min[i], check_.exact(interpolate(full[i], full[i + 1], k / 32.0, c_)));
+  });
+  double min_d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < segments; ++i) {
+    if (!certified[i])
       return fail(PlanStatus::no_path_resolution, "internal: a segment of the found path failed its final certification");
-    }
-    if (relaxed) continue;  // the escape from contact is closer than the margin by design
-    for (int k = 0; k <= 32; ++k) {
-      const Pose q = interpolate(full[i], full[i + 1], k / 32.0, c_);
-      min_d = std::min(min_d, check_.exact(q));
-    }
+    min_d = std::min(min_d, seg_min[i]);
   }
   if (!std::isfinite(min_d)) min_d = check_.exact(full.back());
   r.status = PlanStatus::solved;
