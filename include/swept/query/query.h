@@ -94,7 +94,12 @@ struct MotionResult {
   QueryStats stats;
 };
 /// Is the straight motion of B (pose `from` → `to`, see `interpolate`) against A at `pose_a`
-/// free with distance ≥ margin everywhere? Never reports free when it is not.
+/// free with distance ≥ margin everywhere? Never reports free when it is not. Contact
+/// (distance 0) always blocks, so margin 0 asks for a collision-free motion. Distances are
+/// between the triangle surfaces (a body wholly inside a closed mesh is not in contact).
+/// Each sub-segment [t0, t1] is certified when (t1 − t0)·motion_length < (D(t0) − margin) +
+/// (D(t1) − margin), else bisected depth first (Schwarzer, Saha, Latombe 2005); the distance
+/// queries stop as soon as they prove what the certificate needs (`DistanceRequest::enough`).
 MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& from,
                               const Pose& to, const MotionRequest& request);
 

@@ -1,0 +1,301 @@
+// `swept bench queries A B`: collide / distance / tolerance timings of swept's RSS trees (one
+// per fitter) and FCL's OBBRSS and RSS trees, side by side in the same run, on three seeded
+// pose sets (overlapping, near contact, far), and the speedup of a distance batch on two
+// threads.
+#include "commands.h"
+#include "fcl_peer.h"
+#include "output.h"
+
+#include "swept/bvh/bvh.h"
+#include "swept/io/mesh_io.h"
+#include "swept/query/query.h"
+
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <ctime>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace swept::cli {
+namespace {
+
+struct BenchQueriesOptions {
+  std::string file_a, file_b;
+  int poses = 100;
+  std::uint64_t seed = 1;
+  bool json = false;
+};
+
+/// SplitMix64: the same pose sets on every platform.
+struct Rng {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+  Vec3 direction() {
+    for (;;) {
+      const Vec3 v(2 * uniform() - 1, 2 * uniform() - 1, 2 * uniform() - 1);
+      const double n = v.norm();
+      if (n > 1e-3 && n <= 1.0) return v / n;
+    }
+  }
+  Mat3 rotation() {  // Shoemake's uniform quaternion
+    const double u1 = uniform(), u2 = uniform(), u3 = uniform();
+    const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
+    const double t2 = 2 * std::numbers::pi * u2, t3 = 2 * std::numbers::pi * u3;
+    return Quat(b * std::cos(t3), a * std::sin(t2), a * std::cos(t2), b * std::sin(t3)).normalized().toRotationMatrix();
+  }
+};
+
+std::vector<Triangle> load(const std::string& file) {
+  Result<ImportedModel> m = import_mesh(file);
+  if (!m) throw std::runtime_error(m.error().message);
+  std::vector<Triangle> tris = m->merged().triangles;
+  if (tris.empty()) throw std::runtime_error(file + ": no triangles");
+  return tris;
+}
+
+struct PoseSet {
+  std::string name;
+  std::vector<Pose> poses;  ///< poses of B; A stays at the identity
+};
+
+/// B rotated by `rotation` about its center, its center put at A's center + offset.
+Pose place(const Mat3& rotation, const Vec3& center_a, const Vec3& center_b, const Vec3& offset) {
+  return {rotation, center_a + offset - rotation * center_b};
+}
+
+std::vector<PoseSet> make_pose_sets(const Bvh& a, const std::vector<Triangle>& ta, const Bvh& b,
+                                    const std::vector<Triangle>& tb, int count, std::uint64_t seed) {
+  const Vec3 ca = bounds(ta).center(), cb = bounds(tb).center();
+  const double size = std::max(a.extent, b.extent);
+  const Pose id;
+  Rng rng{seed};
+  std::vector<PoseSet> sets{{"overlapping", {}}, {"near", {}}, {"far", {}}};
+  const int max_attempts = 1000 * count;
+  for (int attempts = 0; static_cast<int>(sets[0].poses.size()) < count; ++attempts) {
+    if (attempts > max_attempts) throw std::runtime_error("could not find overlapping poses for these models");
+    const Mat3 r = rng.rotation();
+    const Vec3 off = rng.direction() * (0.15 * size * rng.uniform());
+    const Pose p = place(r, ca, cb, off);
+    if (collide(a, id, b, p).colliding) sets[0].poses.push_back(p);
+  }
+  // Near contact: bisect the offset along a random direction until 0 < distance ≤ 1% of size.
+  const double limit = 0.01 * size;
+  for (int attempts = 0; static_cast<int>(sets[1].poses.size()) < count; ++attempts) {
+    if (attempts > max_attempts) throw std::runtime_error("could not find near-contact poses for these models");
+    const Mat3 r = rng.rotation();
+    const Vec3 u = rng.direction();
+    auto dist = [&](double s) { return distance(a, id, b, place(r, ca, cb, s * u)).distance; };
+    double lo = 0.0, hi = size;
+    while (dist(hi) <= limit) hi *= 2.0;
+    double d = dist(lo);
+    if (d > limit) continue;  // not touching even at the center: another direction
+    double s = lo;
+    for (int it = 0; it < 200 && !(d > 0.0 && d <= limit); ++it) {
+      s = 0.5 * (lo + hi);
+      d = dist(s);
+      if (d <= 0.0)
+        lo = s;
+      else if (d > limit)
+        hi = s;
+    }
+    if (d > 0.0 && d <= limit) sets[1].poses.push_back(place(r, ca, cb, s * u));
+  }
+  // Far: bounding spheres apart by at least 10% of the size.
+  for (int i = 0; i < count; ++i) {
+    const Mat3 r = rng.rotation();
+    sets[2].poses.push_back(place(r, ca, cb, rng.direction() * (size * (1.1 + 0.9 * rng.uniform()))));
+  }
+  return sets;
+}
+
+/// CPU time of the calling thread in microseconds: the comparison stays fair when other
+/// processes share the machine (wall time would charge their time to whoever runs then).
+double thread_cpu_us() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e6 + static_cast<double>(ts.tv_nsec) * 1e-3;
+}
+
+/// Mean microseconds (thread CPU time) per call of `f` over all poses, repeating passes for
+/// at least 50 ms.
+template <class F>
+double mean_us(const std::vector<Pose>& poses, F&& f) {
+  const double start = thread_cpu_us();
+  std::size_t calls = 0;
+  double elapsed = 0.0;
+  do {
+    for (const Pose& p : poses) f(p);
+    calls += poses.size();
+    elapsed = thread_cpu_us() - start;
+  } while (elapsed < 5e4);
+  return elapsed / static_cast<double>(calls);
+}
+
+struct EngineResult {
+  std::string engine;
+  double collide_us = 0, distance_us = 0, tolerance_us = 0;
+  double bv_tests = -1;  ///< mean BV tests per distance query; < 0: not reported by the engine
+};
+
+void run(const BenchQueriesOptions& o) {
+  if (o.poses < 1) throw std::runtime_error("--poses must be at least 1");
+  const std::vector<Triangle> ta = load(o.file_a);
+  const std::vector<Triangle> tb = o.file_b == o.file_a ? ta : load(o.file_b);
+
+  struct SweptEngine {
+    std::string name;
+    Bvh a, b;
+  };
+  std::vector<SweptEngine> swept_engines;
+  for (const Fitter f : {Fitter::inertia, Fitter::pqp, Fitter::rapid2}) {
+    Result<Bvh> a = build_bvh(ta, {.fitter = f});
+    if (!a) throw std::runtime_error(o.file_a + ": " + a.error().message);
+    Result<Bvh> b = build_bvh(tb, {.fitter = f});
+    if (!b) throw std::runtime_error(o.file_b + ": " + b.error().message);
+    swept_engines.push_back({"swept-" + std::string(to_string(f)), std::move(a).value(), std::move(b).value()});
+  }
+  struct FclEngine {
+    FclVolume volume;
+    std::unique_ptr<FclMesh> a, b;
+  };
+  std::vector<FclEngine> fcl_engines;
+  for (const FclVolume v : {FclVolume::obbrss, FclVolume::rss})
+    fcl_engines.push_back({v, std::make_unique<FclMesh>(ta, v), std::make_unique<FclMesh>(tb, v)});
+
+  const Bvh& ref_a = swept_engines[0].a;
+  const Bvh& ref_b = swept_engines[0].b;
+  const std::vector<PoseSet> sets = make_pose_sets(ref_a, ta, ref_b, tb, o.poses, o.seed);
+  const double size = std::max(ref_a.extent, ref_b.extent);
+  const double tol = 0.01 * size;
+  const Pose id;
+
+  double max_rel_diff = 0.0;
+  std::vector<std::vector<EngineResult>> all;
+  for (const PoseSet& set : sets) {
+    std::vector<EngineResult> results;
+    volatile double sink = 0.0;
+    for (const SweptEngine& e : swept_engines) {
+      EngineResult r{e.name};
+      r.collide_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + collide(e.a, id, e.b, p).colliding; });
+      r.distance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + distance(e.a, id, e.b, p).distance; });
+      r.tolerance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + tolerance(e.a, id, e.b, p, {.tolerance = tol}).within; });
+      double bv = 0;
+      for (const Pose& p : set.poses) bv += static_cast<double>(distance(e.a, id, e.b, p).stats.bv_tests);
+      r.bv_tests = bv / static_cast<double>(set.poses.size());
+      results.push_back(r);
+    }
+    for (const FclEngine& e : fcl_engines) {
+      EngineResult r{std::string(fcl_engine_name(e.volume))};
+      r.collide_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + e.a->collide(id, *e.b, p); });
+      r.distance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + e.a->distance(id, *e.b, p); });
+      // FCL has no tolerance query: its nearest equivalent is a distance query and a comparison.
+      r.tolerance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + (e.a->distance(id, *e.b, p) < tol); });
+      results.push_back(r);
+      for (const Pose& p : set.poses) {
+        const double ours = distance(ref_a, id, ref_b, p).distance;
+        const double theirs = e.a->distance(id, *e.b, p);
+        if (ours <= 0.0 && theirs <= 0.0) continue;  // both in contact (FCL may report −1)
+        const double diff = std::abs(ours - theirs) / std::max({std::abs(theirs), std::abs(ours), 1e-12 * size});
+        max_rel_diff = std::max(max_rel_diff, diff);
+      }
+    }
+    all.push_back(std::move(results));
+  }
+
+  // Batch: 10k distance queries (near and far poses) on 1 thread and on 2.
+  std::vector<Pose> batch;
+  for (std::size_t i = 0; batch.size() < 10000; ++i)
+    batch.push_back(sets[1 + i % 2].poses[(i / 2) % sets[1 + i % 2].poses.size()]);
+  auto time_batch = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto res = distance_batch(ref_a, id, ref_b, batch);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (res.size() != batch.size()) throw std::runtime_error("batch size mismatch");
+    return std::chrono::duration<double>(t1 - t0).count();
+  };
+  time_batch(2);  // warm-up
+  const double t1 = time_batch(1), t2 = time_batch(2);
+
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["sets"] = nlohmann::ordered_json::array();
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+      nlohmann::ordered_json results = nlohmann::ordered_json::array();
+      for (const EngineResult& r : all[s]) {
+        results.push_back({{"engine", r.engine},
+                           {"collide_us", r.collide_us},
+                           {"distance_us", r.distance_us},
+                           {"tolerance_us", r.tolerance_us},
+                           {"bv_tests_per_distance", r.bv_tests >= 0 ? nlohmann::ordered_json(r.bv_tests) : nlohmann::ordered_json()}});
+      }
+      j["sets"].push_back({{"name", sets[s].name}, {"poses", sets[s].poses.size()}, {"results", results}});
+    }
+    j["max_rel_distance_diff_vs_fcl"] = max_rel_diff;
+    std::cout << j.dump(2) << "\n";
+    std::cerr << "batch of " << batch.size() << " distance queries: " << fmt_fixed(t1 * 1e3, 1) << " ms on 1 thread, "
+              << fmt_fixed(t2 * 1e3, 1) << " ms on 2 threads, speedup " << fmt_fixed(t1 / t2, 2) << "x\n";
+    return;
+  }
+  std::cout << "A: " << o.file_a << " (" << ta.size() << " triangles)\nB: " << o.file_b << " (" << tb.size()
+            << " triangles)\nmodel size " << fmt_sci(size) << ", tolerance " << fmt_sci(tol) << ", " << o.poses
+            << " poses per set, seed " << o.seed << "\n\n";
+  Table table({"set", "engine", "collide us", "distance us", "tolerance us", "BV tests/distance",
+               "collide x vs fcl-obbrss", "distance x vs fcl-obbrss"});
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    const EngineResult* fcl = nullptr;
+    for (const EngineResult& r : all[s])
+      if (r.engine == "fcl-obbrss") fcl = &r;
+    for (const EngineResult& r : all[s]) {
+      table.add({sets[s].name, r.engine, fmt_fixed(r.collide_us, 2), fmt_fixed(r.distance_us, 2),
+                 fmt_fixed(r.tolerance_us, 2), r.bv_tests >= 0 ? fmt_fixed(r.bv_tests, 1) : "n/a",
+                 fmt_fixed(fcl->collide_us / r.collide_us, 2), fmt_fixed(fcl->distance_us / r.distance_us, 2)});
+    }
+  }
+  table.print(std::cout);
+  std::cout << "\n(Times are the mean thread CPU time per query. FCL has no tolerance query: its column is\n"
+               " a distance query and a comparison.)\n"
+            << "largest relative distance difference vs FCL: " << fmt_sci(max_rel_diff) << "\n"
+            << "batch of " << batch.size() << " distance queries (swept-inertia): " << fmt_fixed(t1 * 1e3, 1)
+            << " ms on 1 thread, " << fmt_fixed(t2 * 1e3, 1) << " ms on 2 threads, speedup "
+            << fmt_fixed(t1 / t2, 2) << "x\n";
+}
+
+}  // namespace
+
+void add_bench_queries_command(CLI::App& app) {
+  // `bench` groups the benchmark subcommands; whoever registers first creates it.
+  CLI::App* bench = nullptr;
+  try {
+    bench = app.get_subcommand("bench");
+  } catch (const CLI::OptionNotFound&) {
+    bench = app.add_subcommand("bench", "Benchmarks against peer libraries");
+    bench->require_subcommand(1);
+  }
+  auto opts = std::make_shared<BenchQueriesOptions>();
+  CLI::App* cmd = bench->add_subcommand(
+      "queries", "Collide/distance/tolerance timings: swept's fitters vs FCL OBBRSS and RSS");
+  cmd->add_option("A", opts->file_a, "first mesh or CAD file")->required();
+  cmd->add_option("B", opts->file_b, "second mesh or CAD file (may be the same)")->required();
+  cmd->add_option("--poses", opts->poses, "poses per set")->capture_default_str();
+  cmd->add_option("--seed", opts->seed, "seed of the pose sets")->capture_default_str();
+  cmd->add_flag("--json", opts->json, "machine-readable output");
+  cmd->callback([opts] { run(*opts); });
+}
+
+}  // namespace swept::cli

@@ -1,0 +1,38 @@
+#pragma once
+/// FCL 0.7 as a peer for side-by-side comparisons (`swept bench queries`). Only the CLI and
+/// the benchmarks use FCL; the swept libraries never do.
+#include "swept/geometry/pose.h"
+#include "swept/geometry/types.h"
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace swept::cli {
+
+/// FCL's bounding-volume types compared against swept's RSS trees.
+enum class FclVolume { obbrss, rss };
+
+/// The engine name used in tables and JSON: "fcl-obbrss" or "fcl-rss".
+std::string_view fcl_engine_name(FclVolume v);
+
+/// An FCL BVHModel of a triangle soup (built once, immutable afterwards).
+class FclMesh {
+ public:
+  FclMesh(const std::vector<Triangle>& triangles, FclVolume volume);
+  ~FclMesh();
+  FclMesh(const FclMesh&) = delete;
+  FclMesh& operator=(const FclMesh&) = delete;
+
+  /// fcl::collide with a default request (first contact).
+  bool collide(const Pose& pose, const FclMesh& other, const Pose& other_pose) const;
+  /// fcl::distance with a default request and nearest points enabled (swept always computes
+  /// them). Returns FCL's min_distance.
+  double distance(const Pose& pose, const FclMesh& other, const Pose& other_pose) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace swept::cli

@@ -1,0 +1,347 @@
+// Collide, distance and tolerance queries over two RSS trees (Larsen et al. 1999; PQP's
+// traversal scheme): B is placed in A's frame once per query, node pairs are visited depth
+// first from a fixed-capacity stack, the larger node of a pair is split, and for distance the
+// nearer child pair is visited first.
+#include "swept/query/query.h"
+
+#include "traversal.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace swept {
+namespace {
+
+using detail::descend_a;
+using detail::node_pair;
+using detail::PairStack;
+using detail::Relative;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Collision traversal: separated when some projection gap exceeds the radii (+ contact
+/// tolerance), exactly like an OBB separating-axis test.
+CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
+                               const CollideRequest& request, std::int32_t* first_a = nullptr,
+                               std::int32_t* first_b = nullptr) {
+  CollideResult out;
+  if (a.empty() || b.empty()) return out;
+  const double touch = 1e-12 * detail::coordinate_bound(a, b, rel);
+  auto separated = [&](const Node& na, const Node& nb) {
+    ++out.stats.bv_tests;
+    const RectanglePair p = node_pair(na.bv, nb.bv, rel);
+    const double limit = na.bv.radius + nb.bv.radius + touch;
+    return rectangle_gap(p, limit) > limit;
+  };
+  if (separated(a.nodes[0], b.nodes[0])) return out;
+  PairStack stack(a, b);
+  stack.push(0, 0, 0.0);
+  while (!stack.empty()) {
+    const detail::PairEntry e = stack.pop();
+    const Node& na = a.nodes[e.a];
+    const Node& nb = b.nodes[e.b];
+    if (na.is_leaf() && nb.is_leaf()) {
+      for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+        const Triangle tb = rel.apply(b.triangles[j]);
+        for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+          ++out.stats.triangle_tests;
+          if (triangles_intersect(a.triangles[i], tb)) {
+            out.colliding = true;
+            out.contacts.push_back({a.triangle_ids[i], b.triangle_ids[j]});
+            if (first_a && out.contacts.size() == 1) {
+              *first_a = i;
+              *first_b = j;
+            }
+            if (!request.all_contacts) return out;
+          }
+        }
+      }
+      continue;
+    }
+    if (descend_a(na, nb)) {
+      for (std::int32_t c = na.first + 1; c >= na.first; --c)
+        if (!separated(a.nodes[c], nb)) stack.push(c, e.b, 0.0);
+    } else {
+      for (std::int32_t c = nb.first + 1; c >= nb.first; --c)
+        if (!separated(na, b.nodes[c])) stack.push(e.a, c, 0.0);
+    }
+  }
+  std::sort(out.contacts.begin(), out.contacts.end(), [](const ContactPair& x, const ContactPair& y) {
+    return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
+  });
+  return out;
+}
+
+/// Distance traversal in A's frame; points are returned in A's frame.
+struct DistanceSearch {
+  const Bvh& a;
+  const Bvh& b;
+  const Relative& rel;
+  double rel_err, abs_err, enough;
+
+  DistanceSearch(const Bvh& a_, const Bvh& b_, const Relative& rel_, double rel_err_,
+                 double abs_err_, double enough_)
+      : a(a_), b(b_), rel(rel_), rel_err(rel_err_), abs_err(abs_err_), enough(enough_) {}
+
+  double best = kInf;
+  bool have_witness = false;
+  Vec3 point_a = Vec3::Zero(), point_b = Vec3::Zero();
+  std::uint32_t tri_a = 0, tri_b = 0;
+  double pruned_enough = kInf;  ///< smallest bound of a pair dropped because it reached `enough`
+  bool stop_at_first = false;   ///< tolerance queries: stop at the first pair below `best`
+  QueryStats stats;
+
+  /// The bound at which a pair cannot improve the answer (PQP's error semantics), kept up to
+  /// date whenever `best` changes.
+  double best_level = kInf;
+  void set_best(double d) {
+    best = d;
+    best_level = std::min(best / (1.0 + rel_err), best - abs_err);
+  }
+  double prune_level() const { return std::min(best_level, enough); }
+  /// True when a pair with this lower bound is dropped.
+  bool prune(double bound) {
+    if (bound >= best_level) return true;
+    if (bound >= enough) {
+      pruned_enough = std::min(pruned_enough, bound);
+      return true;
+    }
+    return false;
+  }
+  /// Lower bound for node ia of A against node ib of B (already placed in A's frame); the
+  /// bound computation stops as soon as it reaches the prune level.
+  double bound(std::int32_t ia, std::int32_t ib, detail::PlacedRss& placed_b) {
+    ++stats.bv_tests;
+    const Rss& na = a.nodes[ia].bv;
+    const Rss& nb = b.nodes[ib].bv;
+    const double level = prune_level();
+    const double radii = na.radius + nb.radius;
+    return rectangle_lower_bound(node_pair(na, nb, placed_b), level + radii) - radii;
+  }
+
+  void leaves(const Node& na, const Node& nb) {
+    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+      const Triangle tb = rel.apply(b.triangles[j]);
+      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+        ++stats.triangle_tests;
+        TriangleDistance d;
+        if (triangle_distance_below(a.triangles[i], tb, best, d) && d.distance < best) {
+          set_best(d.distance);
+          have_witness = true;
+          point_a = d.point_a;
+          point_b = d.point_b;
+          tri_a = a.triangle_ids[i];
+          tri_b = b.triangle_ids[j];
+        }
+      }
+    }
+  }
+
+  // Depth first, nearer child pair first; a popped pair is dropped when the answer has since
+  // dropped to its bound.
+  void run() {
+    if (a.empty() || b.empty()) return;
+    detail::PlacedRss root_b = detail::place(b.nodes[0].bv, rel);
+    const double root = bound(0, 0, root_b);
+    if (prune(root)) return;
+    PairStack stack(a, b);
+    stack.push(0, 0, root);
+    while (!stack.empty()) {
+      if (stop_at_first && have_witness) return;
+      const detail::PairEntry e = stack.pop();
+      if (prune(e.bound)) continue;
+      const Node& na = a.nodes[e.a];
+      const Node& nb = b.nodes[e.b];
+      if (na.is_leaf() && nb.is_leaf()) {
+        leaves(na, nb);
+        continue;
+      }
+      std::int32_t a0 = e.a, b0 = e.b, a1 = e.a, b1 = e.b;
+      const bool split_a = descend_a(na, nb);
+      if (split_a) {
+        a0 = na.first;
+        a1 = na.first + 1;
+      } else {
+        b0 = nb.first;
+        b1 = nb.first + 1;
+      }
+      // A child pair of two leaves goes straight to the triangle test: its own cheap rejection
+      // (the gap along the centroid line) costs about as much as an RSS test, and when it
+      // does not reject, the RSS test would rarely have.
+      const bool leaf0 = a.nodes[a0].is_leaf() && b.nodes[b0].is_leaf();
+      const bool leaf1 = a.nodes[a1].is_leaf() && b.nodes[b1].is_leaf();
+      if (leaf0) leaves(a.nodes[a0], b.nodes[b0]);
+      if (leaf1) leaves(a.nodes[a1], b.nodes[b1]);
+      if (leaf0 && leaf1) continue;
+      if (leaf0 || leaf1) {
+        const std::int32_t ca = leaf0 ? a1 : a0, cb = leaf0 ? b1 : b0;
+        detail::PlacedRss placed = detail::place(b.nodes[cb].bv, rel);
+        const double d = bound(ca, cb, placed);
+        if (!prune(d)) stack.push(ca, cb, d);
+        continue;
+      }
+      double d0, d1;
+      if (split_a) {
+        detail::PlacedRss placed = detail::place(nb.bv, rel);  // shared by both tests
+        d0 = bound(a0, b0, placed);
+        d1 = bound(a1, b1, placed);
+      } else {
+        detail::PlacedRss p0 = detail::place(b.nodes[b0].bv, rel);
+        detail::PlacedRss p1 = detail::place(b.nodes[b1].bv, rel);
+        d0 = bound(a0, b0, p0);
+        d1 = bound(a1, b1, p1);
+      }
+      // Nearer pair on top of the stack; ties keep the first child first (deterministic).
+      if (d1 < d0) {
+        std::swap(a0, a1);
+        std::swap(b0, b1);
+        std::swap(d0, d1);
+      }
+      if (!prune(d1)) stack.push(a1, b1, d1);
+      if (!prune(d0)) stack.push(a0, b0, d0);
+    }
+  }
+};
+
+DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
+                                 const Relative& rel, const DistanceRequest& request) {
+  const double rel_err = std::max(0.0, request.rel_err), abs_err = std::max(0.0, request.abs_err);
+  DistanceSearch warm(a, b, rel, rel_err, abs_err, request.enough);
+  DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough);
+  const DistanceSearch* used = &cold;
+
+  // Overlapping models: a first-contact search finds a touching pair far faster than the
+  // distance search would single out a zero among many near-zero bounds. It costs little when
+  // the models are apart (most node pairs are rejected near the root).
+  std::int32_t ci = -1, cj = -1;
+  const CollideResult contact = collide_relative(a, b, rel, {}, &ci, &cj);
+  warm.stats = contact.stats;
+  if (contact.colliding) {
+    const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
+    if (d.distance < request.upper_bound) {
+      warm.set_best(d.distance);
+      warm.have_witness = true;
+      warm.point_a = d.point_a;
+      warm.point_b = d.point_b;
+      warm.tri_a = a.triangle_ids[ci];
+      warm.tri_b = b.triangle_ids[cj];
+    }
+  }
+  if (warm.have_witness && warm.best == 0.0) {
+    used = &warm;  // nothing is closer than 0
+  } else if (warm.have_witness || request.upper_bound < kInf) {
+    if (!warm.have_witness) warm.set_best(request.upper_bound);
+    warm.run();
+    used = &warm;
+    if (!warm.have_witness && !(warm.pruned_enough < warm.best)) {
+      // The warm bound pruned everything: nothing is closer than it. Find the witness pair.
+      cold.stats = warm.stats;
+      cold.run();
+      used = &cold;
+    }
+  } else {
+    cold.stats = warm.stats;
+    cold.run();
+  }
+  const DistanceSearch& s = *used;
+  DistanceResult out;
+  out.stats = s.stats;
+  if (s.pruned_enough < s.best) {
+    out.distance = s.pruned_enough;  // a lower bound ≥ enough
+    out.exact = false;
+  } else {
+    out.distance = s.best;
+    out.exact = true;
+  }
+  if (s.have_witness) {
+    out.point_a = pose_a.apply(s.point_a);
+    out.point_b = pose_a.apply(s.point_b);
+    out.triangle_a = s.tri_a;
+    out.triangle_b = s.tri_b;
+  }
+  return out;
+}
+
+}  // namespace
+
+CollideResult collide(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                      const CollideRequest& request) {
+  const Relative rel(pose_a, pose_b);
+  return collide_relative(a, b, rel, request);
+}
+
+DistanceResult distance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                        const DistanceRequest& request) {
+  const Relative rel(pose_a, pose_b);
+  return distance_relative(a, pose_a, b, rel, request);
+}
+
+ToleranceResult tolerance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                          const ToleranceRequest& request) {
+  ToleranceResult out;
+  if (a.empty() || b.empty() || !(request.tolerance > 0.0)) return out;
+  const Relative rel(pose_a, pose_b);
+  const double tol = request.tolerance;
+  // A contact answers at once; otherwise the distance search, pruning at the tolerance and
+  // stopping at the first triangle pair closer than it.
+  std::int32_t ci = -1, cj = -1;
+  const CollideResult contact = collide_relative(a, b, rel, {}, &ci, &cj);
+  out.stats = contact.stats;
+  if (contact.colliding) {
+    const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
+    if (d.distance < tol) {
+      out.within = true;
+      out.distance = d.distance;
+      out.point_a = pose_a.apply(d.point_a);
+      out.point_b = pose_a.apply(d.point_b);
+      out.triangle_a = a.triangle_ids[ci];
+      out.triangle_b = b.triangle_ids[cj];
+      return out;
+    }
+  }
+  DistanceSearch s(a, b, rel, 0.0, 0.0, kInf);
+  s.stats = out.stats;
+  s.set_best(tol);
+  s.stop_at_first = true;
+  s.run();
+  out.stats = s.stats;
+  if (s.have_witness) {
+    out.within = true;
+    out.distance = s.best;
+    out.point_a = pose_a.apply(s.point_a);
+    out.point_b = pose_a.apply(s.point_b);
+    out.triangle_a = s.tri_a;
+    out.triangle_b = s.tri_b;
+  }
+  return out;
+}
+
+std::vector<DistanceResult> distance_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
+                                           std::span<const Pose> poses_b,
+                                           const DistanceRequest& request) {
+  std::vector<DistanceResult> out(poses_b.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, poses_b.size(), 8),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        out[i] = distance(a, pose_a, b, poses_b[i], request);
+                    });
+  return out;
+}
+
+std::vector<CollideResult> collide_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
+                                         std::span<const Pose> poses_b,
+                                         const CollideRequest& request) {
+  std::vector<CollideResult> out(poses_b.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, poses_b.size(), 8),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        out[i] = collide(a, pose_a, b, poses_b[i], request);
+                    });
+  return out;
+}
+
+}  // namespace swept

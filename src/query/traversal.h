@@ -1,0 +1,132 @@
+#pragma once
+// Internal pieces shared by the query implementations: B's placement in A's frame, node-pair
+// bounds and the fixed-capacity traversal stack.
+#include "swept/bvh/bvh.h"
+#include "swept/geometry/distance.h"
+#include "swept/geometry/pose.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace swept::detail {
+
+/// Model B's frame expressed in model A's frame, computed once per query.
+struct Relative {
+  Mat3 rotation = Mat3::Identity();
+  Vec3 translation = Vec3::Zero();
+
+  Relative(const Pose& pose_a, const Pose& pose_b) {
+    const Pose r = relative(pose_a, pose_b);
+    rotation = r.rotation;
+    translation = r.translation;
+  }
+  Triangle apply(const Triangle& t) const {
+    return {rotation * t.p + translation, rotation * t.q + translation, rotation * t.r + translation};
+  }
+};
+
+/// A node of B placed in A's model frame: its center at once, its axes on first use (a
+/// bounding-sphere test often settles a pair from the centers alone).
+struct PlacedRss {
+  const Rss* rss = nullptr;
+  const Relative* rel = nullptr;
+  Vec3 center;
+  Mat3 axes_;
+  bool has_axes = false;
+
+  const Mat3& axes() {
+    if (!has_axes) {
+      axes_.noalias() = rel->rotation * rss->axes;
+      has_axes = true;
+    }
+    return axes_;
+  }
+};
+
+inline PlacedRss place(const Rss& nb, const Relative& rel) {
+  PlacedRss p;
+  p.rss = &nb;
+  p.rel = &rel;
+  p.center.noalias() = rel.rotation * nb.center;
+  p.center += rel.translation;
+  return p;
+}
+
+/// Rectangles of node `na` of A and node `nb` of B (placed in A's frame), in na's frame.
+inline RectanglePair node_pair(const Rss& na, const Rss& nb, PlacedRss& placed) {
+  RectanglePair p;
+  p.rotation.noalias() = na.axes.transpose() * placed.axes();
+  p.translation.noalias() = na.axes.transpose() * (placed.center - na.center);
+  p.a[0] = na.half_length[0];
+  p.a[1] = na.half_length[1];
+  p.b[0] = nb.half_length[0];
+  p.b[1] = nb.half_length[1];
+  return p;
+}
+
+/// Rectangles of node `na` of A and node `nb` of B (B placed by `rel`), in na's frame.
+inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel) {
+  PlacedRss placed = place(nb, rel);
+  return node_pair(na, nb, placed);
+}
+
+/// A bound on |coordinate| of every vertex of A and of B placed in A's frame; 1e-12 of it
+/// bounds every `touch_tolerance` the triangle tests will use.
+inline double coordinate_bound(const Bvh& a, const Bvh& b, const Relative& rel) {
+  auto bound = [](const Rss& v, const Vec3& c) {
+    return c.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
+  };
+  const Rss& ra = a.nodes[0].bv;
+  const Rss& rb = b.nodes[0].bv;
+  return std::max(bound(ra, ra.center), bound(rb, rel.rotation * rb.center + rel.translation));
+}
+
+/// Size used to pick which node of a pair to descend.
+inline double node_size(const Rss& v) { return v.half_length[0] + v.half_length[1] + v.radius; }
+
+/// True when node a (rather than node b) should be split.
+inline bool descend_a(const Node& a, const Node& b) {
+  if (b.is_leaf()) return true;
+  if (a.is_leaf()) return false;
+  return node_size(a.bv) >= node_size(b.bv);
+}
+
+/// A node pair waiting on the traversal stack, with its lower bound.
+struct PairEntry {
+  std::int32_t a = 0;
+  std::int32_t b = 0;
+  double bound = 0.0;
+};
+
+/// Fixed-capacity LIFO of node pairs. Depth-first traversal of two trees keeps at most one
+/// pending sibling per level, so depth(A) + depth(B) + 2 entries always suffice; deeper trees
+/// than the inline capacity use one heap block sized once per query.
+class PairStack {
+ public:
+  PairStack(const Bvh& a, const Bvh& b) {
+    const std::size_t need = static_cast<std::size_t>(a.depth + b.depth) + 4;
+    if (need > inline_.size()) {
+      heap_.resize(need);
+      data_ = heap_.data();
+    } else {
+      data_ = inline_.data();
+    }
+  }
+  PairStack(const PairStack&) = delete;
+  PairStack& operator=(const PairStack&) = delete;
+
+  bool empty() const { return size_ == 0; }
+  void push(std::int32_t a, std::int32_t b, double bound) { data_[size_++] = {a, b, bound}; }
+  PairEntry pop() { return data_[--size_]; }
+
+ private:
+  std::array<PairEntry, 192> inline_;
+  std::vector<PairEntry> heap_;
+  PairEntry* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
+}  // namespace swept::detail

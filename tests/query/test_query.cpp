@@ -1,0 +1,262 @@
+// collide / distance / tolerance against the all-pairs oracle on seeded meshes and poses,
+// for every fitter: random soups, slivers and degenerate triangles, touching and parallel
+// boxes, and a model far from the origin.
+#include "swept/query/query.h"
+
+#include "query_oracle.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace swept {
+namespace {
+
+using test::Rng;
+
+Bvh build(const std::vector<Triangle>& tris, Fitter fitter) {
+  Result<Bvh> r = build_bvh(tris, {.fitter = fitter});
+  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
+  return std::move(r).value();
+}
+
+struct Scene {
+  std::string name;
+  std::vector<Triangle> a, b;
+  std::vector<Pose> poses_a, poses_b;
+};
+
+/// The B pose t% of the way between "overlapping" and "far", around A.
+Pose random_pose(Rng& rng, const Vec3& center, double spread) {
+  return {rng.rotation(), center + rng.vec(-spread, spread)};
+}
+
+std::vector<Scene> scenes() {
+  std::vector<Scene> out;
+  Rng rng(2024);
+  {
+    Scene s{"random", test::random_triangles(rng, 300, 10, 2), test::random_triangles(rng, 200, 6, 2), {}, {}};
+    for (int i = 0; i < 24; ++i) {
+      s.poses_a.push_back(random_pose(rng, Vec3::Zero(), 1));
+      s.poses_b.push_back(random_pose(rng, Vec3::Zero(), 2 + i));
+    }
+    out.push_back(std::move(s));
+  }
+  {
+    Scene s{"nasty", test::nasty_triangles(rng, 300, 10), test::nasty_triangles(rng, 250, 8), {}, {}};
+    for (int i = 0; i < 24; ++i) {
+      s.poses_a.push_back(random_pose(rng, Vec3::Zero(), 1));
+      s.poses_b.push_back(random_pose(rng, Vec3::Zero(), 1 + 0.5 * i));
+    }
+    out.push_back(std::move(s));
+  }
+  {
+    // Far from the origin: the models' own coordinates are ~1e6.
+    const Vec3 far(1e6, -1e6, 1e6);
+    Scene s{"far", test::random_triangles(rng, 200, 10, 2, far), test::nasty_triangles(rng, 150, 6), {}, {}};
+    for (int i = 0; i < 16; ++i) {
+      s.poses_a.push_back({Mat3::Identity(), Vec3::Zero()});
+      s.poses_b.push_back(random_pose(rng, far, 1 + i));
+    }
+    out.push_back(std::move(s));
+  }
+  {
+    // Boxes: face-to-face touching (coplanar faces), edge on edge, parallel faces at a gap,
+    // overlapping.
+    Scene s{"boxes", test::box_triangles({0, 0, 0}, {2, 2, 2}), test::box_triangles({0, 0, 0}, {1, 1, 1}), {}, {}};
+    const Mat3 rz = Eigen::AngleAxisd(0.25 * std::numbers::pi, Vec3::UnitZ()).toRotationMatrix();
+    const Mat3 rx = Eigen::AngleAxisd(0.25 * std::numbers::pi, Vec3::UnitX()).toRotationMatrix();
+    const std::vector<Pose> pb = {
+        Pose::from_translation({2, 0.5, 0.5}),           // face on face
+        Pose::from_translation({2, 2, 0.5}),             // edge on edge, coplanar faces
+        Pose::from_translation({2, 2, 2}),               // corner on corner
+        Pose::from_translation({2 + 1e-3, 0.5, 0.5}),    // parallel faces, gap 1e-3
+        Pose::from_translation({2 + 1e-9, 0.2, 0.3}),    // parallel faces, gap 1e-9
+        Pose::from_translation({1.5, 0.5, 0.5}),         // overlapping
+        Pose::from_translation({0.5, 0.5, 0.5}),         // inside, no surface contact
+        {rz * rx, Vec3(2.0 + std::sqrt(0.5), 1, 1)},     // tilted edge touching a face
+        {rz, Vec3(2.0, 1, 0.5)},                         // vertical edge on a face
+    };
+    for (const Pose& p : pb) {
+      s.poses_a.push_back(Pose::identity());
+      s.poses_b.push_back(p);
+    }
+    // The same configurations far from the origin, with A moved there by its pose.
+    Rng r2(3);
+    const Mat3 rot = r2.rotation();
+    const Pose shift{rot, Vec3(1e6, 2e6, -1e6)};
+    for (const Pose& p : pb) {
+      s.poses_a.push_back(shift);
+      s.poses_b.push_back(compose(shift, p));
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+class QueryOracle : public ::testing::TestWithParam<Fitter> {};
+
+TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
+  int colliding = 0, separated = 0;
+  for (const Scene& s : scenes()) {
+    const Bvh a = build(s.a, GetParam());
+    const Bvh b = build(s.b, GetParam());
+    for (std::size_t k = 0; k < s.poses_b.size(); ++k) {
+      SCOPED_TRACE(s.name + " pose " + std::to_string(k));
+      const Pose& pa = s.poses_a[k];
+      const Pose& pb = s.poses_b[k];
+      // Collide: flag and the full contact set.
+      const auto expected = test::brute_contacts(s.a, s.b, pa, pb);
+      const CollideResult all = collide(a, pa, b, pb, {.all_contacts = true});
+      ASSERT_EQ(all.colliding, !expected.empty());
+      ASSERT_EQ(all.contacts.size(), expected.size());
+      for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(all.contacts[i].triangle_a, expected[i].first);
+        EXPECT_EQ(all.contacts[i].triangle_b, expected[i].second);
+      }
+      const CollideResult first = collide(a, pa, b, pb);
+      EXPECT_EQ(first.colliding, all.colliding);
+      if (first.colliding) {
+        ASSERT_EQ(first.contacts.size(), 1u);
+        EXPECT_TRUE(std::find(expected.begin(), expected.end(),
+                              std::make_pair(first.contacts[0].triangle_a, first.contacts[0].triangle_b)) !=
+                    expected.end());
+        ++colliding;
+      } else {
+        ++separated;
+      }
+      EXPECT_GT(all.stats.bv_tests, 0u);
+
+      // Distance: value, witnesses on the reported triangles at the reported distance.
+      const test::BruteDistance bd = test::brute_distance(s.a, s.b, pa, pb);
+      const DistanceResult d = distance(a, pa, b, pb);
+      EXPECT_TRUE(d.exact);
+      ASSERT_NEAR(d.distance, bd.distance, 1e-12 * bd.distance + 1e-300);
+      double scale = 1.0;
+      for (const Triangle& t : s.a) scale = std::max(scale, pa.apply(t.p).cwiseAbs().maxCoeff());
+      const double wtol = 1e-11 * scale;
+      EXPECT_NEAR((d.point_a - d.point_b).norm(), d.distance, wtol);
+      const Triangle ta = s.a[d.triangle_a];
+      const Triangle tb = s.b[d.triangle_b];
+      EXPECT_LE(point_triangle_closest(pa.apply_inverse(d.point_a), ta).distance, wtol);
+      EXPECT_LE(point_triangle_closest(pb.apply_inverse(d.point_b), tb).distance, wtol);
+      EXPECT_GT(d.stats.triangle_tests, 0u);
+      EXPECT_LE(d.stats.triangle_tests, s.a.size() * s.b.size());
+
+      // Error bounds (PQP semantics): within the bound, never below the true distance.
+      const DistanceResult dr = distance(a, pa, b, pb, {.rel_err = 0.1});
+      EXPECT_GE(dr.distance, bd.distance * (1 - 1e-12));
+      EXPECT_LE(dr.distance, 1.1 * bd.distance * (1 + 1e-12) + 1e-300);
+      const double abs_err = 0.05;
+      const DistanceResult da = distance(a, pa, b, pb, {.abs_err = abs_err});
+      EXPECT_GE(da.distance, bd.distance * (1 - 1e-12));
+      EXPECT_LE(da.distance, bd.distance + abs_err * (1 + 1e-9));
+
+      // Warm start: a valid upper bound changes nothing but the work.
+      const DistanceResult dw = distance(a, pa, b, pb, {.upper_bound = bd.distance * 1.5 + 1e-3});
+      EXPECT_EQ(dw.distance, d.distance);
+      const DistanceResult dx = distance(a, pa, b, pb, {.upper_bound = bd.distance});
+      EXPECT_EQ(dx.distance, d.distance);
+      EXPECT_LE(point_triangle_closest(pa.apply_inverse(dx.point_a), s.a[dx.triangle_a]).distance, wtol);
+
+      // Early exit: a lower bound ≥ enough when the distance is at least that, else exact.
+      for (const double enough : {0.5 * bd.distance, 2.0 * bd.distance + 1e-6}) {
+        const DistanceResult de = distance(a, pa, b, pb, {.enough = enough});
+        if (bd.distance >= enough) {
+          EXPECT_GE(de.distance, enough);
+          EXPECT_LE(de.distance, bd.distance * (1 + 1e-12));
+        } else {
+          EXPECT_TRUE(de.exact);
+          EXPECT_NEAR(de.distance, bd.distance, 1e-12 * bd.distance);
+        }
+      }
+
+      // Tolerance: either side of the true distance.
+      if (bd.distance > 0) {
+        const ToleranceResult in = tolerance(a, pa, b, pb, {.tolerance = bd.distance * 1.01});
+        EXPECT_TRUE(in.within);
+        EXPECT_LT(in.distance, bd.distance * 1.01);
+        EXPECT_NEAR((in.point_a - in.point_b).norm(), in.distance, wtol);
+        const ToleranceResult out = tolerance(a, pa, b, pb, {.tolerance = bd.distance * 0.99});
+        EXPECT_FALSE(out.within);
+      }
+    }
+  }
+  EXPECT_GT(colliding, 10);
+  EXPECT_GT(separated, 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fitters, QueryOracle,
+                         ::testing::Values(Fitter::inertia, Fitter::pqp, Fitter::rapid2),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST(QueryConcurrency, ManyThreadsGiveTheSerialResults) {
+  Rng rng(77);
+  const auto ta = test::random_triangles(rng, 400, 10, 2);
+  const auto tb = test::nasty_triangles(rng, 300, 8);
+  const Bvh a = build(ta, Fitter::inertia);
+  const Bvh b = build(tb, Fitter::pqp);
+  std::vector<Pose> poses;
+  for (int i = 0; i < 200; ++i) poses.push_back(random_pose(rng, Vec3::Zero(), 1 + 0.1 * i));
+  std::vector<DistanceResult> serial_d;
+  std::vector<CollideResult> serial_c;
+  for (const Pose& p : poses) {
+    serial_d.push_back(distance(a, Pose::identity(), b, p));
+    serial_c.push_back(collide(a, Pose::identity(), b, p, {.all_contacts = true}));
+  }
+  auto same_d = [](const DistanceResult& x, const DistanceResult& y) {
+    return x.distance == y.distance && x.point_a == y.point_a && x.point_b == y.point_b &&
+           x.triangle_a == y.triangle_a && x.triangle_b == y.triangle_b &&
+           x.stats.bv_tests == y.stats.bv_tests;
+  };
+  auto same_c = [](const CollideResult& x, const CollideResult& y) {
+    if (x.colliding != y.colliding || x.contacts.size() != y.contacts.size()) return false;
+    for (std::size_t i = 0; i < x.contacts.size(); ++i)
+      if (x.contacts[i].triangle_a != y.contacts[i].triangle_a || x.contacts[i].triangle_b != y.contacts[i].triangle_b)
+        return false;
+    return true;
+  };
+  // Batches (oneTBB) keep input order.
+  const auto bd = distance_batch(a, Pose::identity(), b, poses);
+  const auto bc = collide_batch(a, Pose::identity(), b, poses, {.all_contacts = true});
+  ASSERT_EQ(bd.size(), poses.size());
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    EXPECT_TRUE(same_d(bd[i], serial_d[i])) << i;
+    EXPECT_TRUE(same_c(bc[i], serial_c[i])) << i;
+  }
+  // Plain threads hammering the same trees.
+  std::vector<int> mismatches(8, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 8; ++t) {
+    threads.emplace_back([&, t] {
+      for (std::size_t k = 0; k < poses.size(); ++k) {
+        const std::size_t i = (k * 7 + static_cast<std::size_t>(t) * 13) % poses.size();
+        if (!same_d(distance(a, Pose::identity(), b, poses[i]), serial_d[i])) ++mismatches[t];
+        if (!same_c(collide(a, Pose::identity(), b, poses[i], {.all_contacts = true}), serial_c[i]))
+          ++mismatches[t];
+      }
+    });
+  }
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < 8; ++t) EXPECT_EQ(mismatches[t], 0) << "thread " << t;
+}
+
+TEST(QueryEdgeCases, SingleTriangleModelsAndIdenticalPoses) {
+  const std::vector<Triangle> one = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
+  const Bvh a = build(one, Fitter::inertia);
+  // The same model at the same pose: coplanar overlap.
+  EXPECT_TRUE(collide(a, Pose::identity(), a, Pose::identity()).colliding);
+  EXPECT_EQ(distance(a, Pose::identity(), a, Pose::identity()).distance, 0.0);
+  const DistanceResult d = distance(a, Pose::identity(), a, Pose::from_translation({0, 0, 2.5}));
+  EXPECT_NEAR(d.distance, 2.5, 1e-15);
+  EXPECT_FALSE(tolerance(a, Pose::identity(), a, Pose::from_translation({0, 0, 2.5}), {.tolerance = 2.5}).within);
+  EXPECT_TRUE(tolerance(a, Pose::identity(), a, Pose::from_translation({0, 0, 2.5}), {.tolerance = 2.50001}).within);
+}
+
+}  // namespace
+}  // namespace swept
