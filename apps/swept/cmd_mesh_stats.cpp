@@ -1,0 +1,92 @@
+// `swept mesh-stats`: how widely triangle sizes and shapes spread in mesh and CAD files.
+#include "commands.h"
+#include "output.h"
+
+#include "swept/io/mesh_io.h"
+#include "swept/scenes/mesh_stats.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace swept::cli {
+namespace {
+
+struct MeshStatsOptions {
+  std::vector<std::string> files;
+  double deflection = 0.1;
+  double angular_deflection = 0.5;
+  std::string unit = "mm";
+  std::string file_unit;
+  bool json = false;
+  bool markdown = false;
+};
+
+void run(const MeshStatsOptions& o) {
+  const std::vector<std::string> header{"file", "triangles", "degenerate", "area max/min", "median aspect", "aspect>10"};
+  Table table(header);
+  std::string md = "|";
+  for (const std::string& h : header) md += " " + h + " |";
+  md += "\n|---|---:|---:|---:|---:|---:|\n";
+  nlohmann::json meshes = nlohmann::json::array();
+  for (const std::string& file : o.files) {
+    ImportOptions io;
+    io.unit = o.unit;
+    io.file_unit = o.file_unit;
+    io.linear_deflection = o.deflection;
+    io.angular_deflection = o.angular_deflection;
+    auto model = import_mesh(file, io);
+    if (!model) throw std::runtime_error(model.error().message);
+    const scenes::MeshStats s = scenes::mesh_stats(model->merged().triangles);
+    table.add({file, fmt_int(s.triangles), fmt_int(s.degenerate), fmt_sci(s.area_ratio), fmt_fixed(s.aspect_median, 2),
+               fmt_fixed(100.0 * s.aspect_over_10, 1) + " %"});
+    md += "| " + file + " | " + fmt_int(s.triangles) + " | " + fmt_int(s.degenerate) + " | " + fmt_sci(s.area_ratio) +
+          " | " + fmt_fixed(s.aspect_median, 2) + " | " + fmt_fixed(100.0 * s.aspect_over_10, 1) + " % |\n";
+    meshes.push_back({{"file", file},
+                      {"unit", o.unit},
+                      {"triangles", s.triangles},
+                      {"degenerate_triangles", s.degenerate},
+                      {"area_min", s.area_min},
+                      {"area_max", s.area_max},
+                      {"area_ratio", s.area_ratio},
+                      {"aspect_ratio_median", s.aspect_median},
+                      {"aspect_ratio_max", s.aspect_max},
+                      {"aspect_ratio_over_10_fraction", s.aspect_over_10}});
+  }
+  if (o.json) {
+    std::cout << nlohmann::json{{"meshes", meshes}}.dump(2) << "\n";
+  } else if (o.markdown) {
+    std::cout << md;
+  } else {
+    table.print(std::cout);
+  }
+}
+
+}  // namespace
+
+void add_mesh_stats_command(CLI::App& app) {
+  auto o = std::make_shared<MeshStatsOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "mesh-stats",
+      "Triangle-size and shape spread per file: triangles, degenerate triangles (2*area/longest edge^2\n"
+      "<= 1e-12), largest/smallest area ratio, median aspect ratio (longest edge / smallest height) and\n"
+      "the share of triangles with aspect ratio > 10 (both over the non-degenerate triangles).\n"
+      "A file with several parts counts as one mesh.");
+  cmd->add_option("files", o->files, "Mesh or CAD files (STL, OBJ, PLY, OFF, glTF/GLB, DAE, STEP, IGES, BREP)")
+      ->required()->check(CLI::ExistingFile);
+  cmd->add_option("--deflection", o->deflection, "BRepMesh linear deflection for CAD files, in --unit")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--angular-deflection", o->angular_deflection, "BRepMesh angular deflection for CAD files, radians")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--unit", o->unit, "Length unit of the output: m, cm, mm, um, in, ft")->capture_default_str();
+  cmd->add_option("--file-unit", o->file_unit, "Unit of mesh files' coordinates (default mm; CAD files carry their own)");
+  cmd->add_flag("--json", o->json, "Print one JSON document instead of the table");
+  cmd->add_flag("--markdown", o->markdown, "Print a Markdown table instead of the aligned one");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace swept::cli
