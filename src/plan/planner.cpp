@@ -141,7 +141,8 @@ class Checker {
     struct Piece {
       double t0, d0, t1, d1;
     };
-    const double total = length(a, b);
+    // The allowance covers rounding in the interpolated poses (as motion_clearance does).
+    const double total = length(a, b) * (1.0 + 1e-9);
     if (total == 0.0) return true;
     auto at = [&](double t) { return interpolate(a, b, t, s_.reference); };
     if (da < 0) da = clearance(a, margin_ + total, relaxed);
@@ -720,8 +721,22 @@ PlanResult Planner::run() {
     const bool relaxed = i < fixed;
     certified[i] = check_.certify(full[i], -1, full[i + 1], -1, relaxed) ? 1 : 0;
     if (relaxed) return;  // the escape from contact is closer than the margin by design
-    for (int k = 0; k <= 32; ++k)
-      seg_min[i] = std::min(seg_min[i], check_.exact(interpolate(full[i], full[i + 1], k / 32.0, c_)));
+    // The smallest distance: 64 samples, then a golden-section search around the smallest.
+    constexpr int kSamples = 64;
+    auto at = [&](double t) { return check_.exact(interpolate(full[i], full[i + 1], t, c_)); };
+    int best = 0;
+    for (int k = 0; k <= kSamples; ++k) {
+      const double d = at(static_cast<double>(k) / kSamples);
+      if (d < seg_min[i]) seg_min[i] = d, best = k;
+    }
+    double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
+    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = at(x1), f2 = at(x2);
+    for (int it = 0; it < 30; ++it) {
+      if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = at(x1);
+      else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = at(x2);
+    }
+    seg_min[i] = std::min({seg_min[i], f1, f2});
   });
   double min_d = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < segments; ++i) {
