@@ -82,9 +82,16 @@ struct Builder {
     Scratch& s = scratch.local();
     const std::size_t n = node.end - node.begin;
     const std::uint32_t* node_ids = ids.data() + node.begin;
+    const Vec3 origin = tris[node_ids[0]].p;
+    Mat3 leaf_axes;
+    if (n == 1 && detail::single_triangle_axes(tris[node_ids[0]], leaf_axes)) {
+      // A one-triangle leaf: the fitters' axes in closed form.
+      detail::project_vertices(tris.data(), node_ids, n, leaf_axes, origin, s.projected);
+      out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), leaf_axes, origin);
+      return out;
+    }
     // The node's own fit orients its RSS (SPEC §2.3) and gives the split candidates (§2.2).
     const Fit f = detail::fit_ids(info.data(), node_ids, n, config.fitter);
-    const Vec3 origin = tris[node_ids[0]].p;
     detail::project_vertices(tris.data(), node_ids, n, f.axes, origin, s.projected);
     out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), f.axes, origin);
     if (n <= static_cast<std::size_t>(config.leaf_size)) return out;

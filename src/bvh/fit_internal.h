@@ -53,6 +53,10 @@ Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin);
 void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
                       const Vec3& origin, std::vector<Vec3>& out);
 
+/// The axes every fitter gives a single non-degenerate triangle (closed form, no eigen solve).
+/// False for a degenerate triangle.
+bool single_triangle_axes(const Triangle& t, Mat3& axes);
+
 /// Eigenvectors of a symmetric 3×3 matrix as columns, sorted by decreasing eigenvalue,
 /// right-handed (third = first × second).
 void sorted_eigen(const Mat3& m, Mat3& axes, Vec3& values);

@@ -64,6 +64,39 @@ void sorted_eigen(const Mat3& m, Mat3& axes, Vec3& values) {
   axes.col(2) = e1.cross(e2).normalized();
 }
 
+bool single_triangle_axes(const Triangle& t, Mat3& axes) {
+  // Every fitter's matrix for one triangle is a positive multiple of the triangle's own vertex
+  // scatter S (PQP_FIT: S/3; RAPID2_FIT: A·S/12; INERTIA_FIT: S/3), so the axes are S's
+  // eigenvectors: the normal, and the in-plane principal directions in closed form.
+  const Vec3 e = t.q - t.p, f = t.r - t.p;
+  const Vec3 normal = e.cross(f);
+  const double nn = normal.norm();
+  const double scale = std::max(e.squaredNorm(), f.squaredNorm());
+  if (!(nn > 1e-9 * scale) || !std::isfinite(nn)) return false;  // degenerate: the general path
+  const Vec3 n = normal / nn;
+  const Vec3 u = e.normalized();
+  const Vec3 v = n.cross(u);
+  const Vec3 m = (t.p + t.q + t.r) / 3.0;
+  double a = 0, b = 0, c = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 d = t[k] - m;
+    const double x = d.dot(u), y = d.dot(v);
+    a += x * x, b += x * y, c += y * y;
+  }
+  const double theta = 0.5 * std::atan2(2.0 * b, a - c);  // the major axis of [[a b] [b c]]
+  Vec3 e1 = std::cos(theta) * u + std::sin(theta) * v;
+  Eigen::Index i;
+  e1.cwiseAbs().maxCoeff(&i);
+  if (e1[i] < 0) e1 = -e1;
+  Vec3 e2 = n.cross(e1);
+  e2.cwiseAbs().maxCoeff(&i);
+  if (e2[i] < 0) e2 = -e2;
+  axes.col(0) = e1;
+  axes.col(1) = e2;
+  axes.col(2) = e1.cross(e2).normalized();
+  return true;
+}
+
 namespace {
 
 struct Sums {

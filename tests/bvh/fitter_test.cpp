@@ -227,3 +227,25 @@ TEST(Rss, RoundedCornersContainEveryVertex) {
 
 }  // namespace
 }  // namespace swept
+
+namespace swept {
+namespace {
+
+TEST(Fitter, OneTriangleLeafAxesMatchTheFitters) {
+  // The builder's closed form for one-triangle leaves gives the fitters' own axes.
+  test::Rng rng(17);
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto tri = test::random_triangles(rng, 1, 10.0, 5.0, rng.vec(-100, 100));
+    auto bvh = build_bvh(tri);
+    ASSERT_TRUE(bvh);
+    const Fit f = fit(tri, Fitter::inertia);
+    if (f.eigenvalues[0] - f.eigenvalues[1] < 1e-6 * f.eigenvalues[0]) continue;  // axes not unique
+    const Rss& leaf = bvh->nodes[0].bv;
+    EXPECT_NEAR(std::abs(leaf.axes.col(2).dot(f.axes.col(2))), 1.0, 1e-9);
+    const Rss direct = fit_rss(tri, f.axes);
+    EXPECT_NEAR(surface_area(leaf), surface_area(direct), 1e-7 * surface_area(direct));  // eigen solver rounding
+  }
+}
+
+}  // namespace
+}  // namespace swept
