@@ -713,7 +713,10 @@ PlanResult Planner::run() {
 
   // Final certification of every segment, and the smallest distance along the path (exact
   // distance at 32 samples a segment; the certificate guarantees the margin in between).
-  // Segments in parallel, results read in order: the same outcome at any thread count.
+  // Segments in parallel, results read in order: the same outcome at any thread count. The
+  // smallest distance of a segment: 16 exact samples, then a golden-section search around the
+  // smallest.
+  constexpr int kSamples = 16;
   const std::size_t segments = full.size() - 1;
   std::vector<char> certified(segments, 0);
   std::vector<double> seg_min(segments, std::numeric_limits<double>::infinity());
@@ -721,8 +724,6 @@ PlanResult Planner::run() {
     const bool relaxed = i < fixed;
     certified[i] = check_.certify(full[i], -1, full[i + 1], -1, relaxed) ? 1 : 0;
     if (relaxed) return;  // the escape from contact is closer than the margin by design
-    // The smallest distance: 64 samples, then a golden-section search around the smallest.
-    constexpr int kSamples = 64;
     auto at = [&](double t) { return check_.exact(interpolate(full[i], full[i + 1], t, c_)); };
     int best = 0;
     for (int k = 0; k <= kSamples; ++k) {
@@ -732,7 +733,7 @@ PlanResult Planner::run() {
     double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
     const double g = (std::sqrt(5.0) - 1.0) / 2.0;
     double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = at(x1), f2 = at(x2);
-    for (int it = 0; it < 30; ++it) {
+    for (int it = 0; it < 24; ++it) {
       if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = at(x1);
       else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = at(x2);
     }
