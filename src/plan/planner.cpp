@@ -158,6 +158,8 @@ class Checker {
       // The certificate needs this piece split: too many pieces means the motion grazes the
       // margin; refuse rather than loop.
       if (++queries > kMaxQueriesPerEdge || p.t1 - p.t0 < 1e-9) return false;
+      // Past the search's deadline a long certificate gives up (conservatively: not free).
+      if ((queries & 63) == 0 && deadline_ && Clock::now() > *deadline_) return false;
       const double tm = 0.5 * (p.t0 + p.t1);
       const double dm = clearance(at(tm), margin_ + 0.5 * len, relaxed);
       if (dm <= margin_) return false;
@@ -169,6 +171,8 @@ class Checker {
 
   double margin() const { return margin_; }
   bool relaxed_ready() const { return relaxed_ready_; }
+  /// While set, certificates that run past this time give up (not free).
+  void set_deadline(std::optional<Clock::time_point> t) { deadline_ = t; }
 
   mutable std::atomic<std::uint64_t> distance_queries{0};
   static constexpr int kMaxQueriesPerEdge = 200000;
@@ -178,6 +182,7 @@ class Checker {
   double margin_;
   std::unique_ptr<Bvh> reduced_body_, reduced_obstacles_;
   bool relaxed_ready_ = false;
+  std::optional<Clock::time_point> deadline_;
 };
 
 // ---- the grid ---------------------------------------------------------------------------------
@@ -625,6 +630,7 @@ PlanResult Planner::run() {
     if (!reachable) return fail(PlanStatus::invalid_goal, "the goal region (outside the obstacles' box) lies outside the bounds");
   }
   const double margin = pb_.clearance;
+  check_.set_deadline(t_start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_)));
   start_ = pb_.start;
   std::vector<Pose> prefix{pb_.start};
   start_distance_ = check_.clearance(start_, margin + 0.05 * size);
@@ -713,6 +719,7 @@ PlanResult Planner::run() {
 
   // Final certification of every segment, and the smallest distance along the path (exact
   // distance at 32 samples a segment; the certificate guarantees the margin in between).
+  check_.set_deadline(std::nullopt);  // the found path is certified in full, whatever the time
   // Segments in parallel, results read in order: the same outcome at any thread count. The
   // smallest distance of a segment: 16 exact samples, then a golden-section search around the
   // smallest.
