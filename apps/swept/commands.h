@@ -10,7 +10,26 @@ struct ExitCode {
 };
 
 void add_bvh_command(CLI::App& app);
+void add_plan_command(CLI::App& app);
+void add_view_command(CLI::App& app);
 void add_scene_command(CLI::App& app);
 void add_mesh_stats_command(CLI::App& app);
+void add_bench_queries_command(CLI::App& app);
+void add_bench_paper_command(CLI::App& app);
+
+}  // namespace swept::cli
+
+namespace swept {
+struct Problem;
+struct PlanScene;
+struct Path;
+}  // namespace swept
+
+namespace swept::cli {
+
+/// Writes the self-contained HTML viewer (three.js bundled in) of a problem and a path:
+/// obstacles, the body animated along the path, the clearance plot. Throws std::runtime_error.
+void write_view_file(const Problem& problem, const PlanScene& scene, const Path& path,
+                     const std::string& html_file);
 
 }  // namespace swept::cli

@@ -11,8 +11,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "swept 0.1.0");
   swept::cli::add_bvh_command(app);
+  swept::cli::add_plan_command(app);
+  swept::cli::add_view_command(app);
   swept::cli::add_scene_command(app);
   swept::cli::add_mesh_stats_command(app);
+  swept::cli::add_bench_queries_command(app);
+  swept::cli::add_bench_paper_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

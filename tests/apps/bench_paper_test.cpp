@@ -1,0 +1,137 @@
+// `swept bench paper` at test scale, end to end (a smoke test: every table, the JSON, the plots;
+// no timing assertions).
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace swept {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int code = -1;
+  std::string out;
+};
+
+CliRun run_cli(const std::string& args) {
+  const std::string cmd = std::string(SWEPT_CLI) + " " + args + " 2>&1";
+  CliRun r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class BenchPaper : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("swept_bench_paper_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path dir;
+};
+
+TEST_F(BenchPaper, TestScaleProducesEveryTableTheJsonAndThePlots) {
+  const fs::path out = dir / "out";
+  // Two of the three scenes keep the test under two minutes on a loaded machine (tunnel-console
+  // alone plans for ~30 s of CPU over its six configurations).
+  std::string args =
+      "bench paper --scale test --runs 1 --poses 2 --no-ompl --only air-cleaner,cylinder-head --out " + out.string();
+  const std::optional<fs::path> data = test::shared_data();
+  if (data)
+    args += " --data " + data->string();
+  else
+    args += " --no-cad";
+  const CliRun r = run_cli(args);
+  ASSERT_EQ(r.code, 0) << r.out;
+
+  const auto j = nlohmann::json::parse(slurp(out / "results.json"));
+  ASSERT_EQ(j["scenes"].size(), 2u);
+  // Tables II and IV: every mesh, every fitter under both split rules, FCL beside them.
+  std::size_t scene_meshes = 0, cad_meshes = 0;
+  for (const auto& m : j["meshes"]) {
+    const std::string kind = m["kind"];
+    (kind == "cad" ? cad_meshes : scene_meshes) += 1;
+    EXPECT_GT(m["triangles"].get<std::size_t>(), 0u);
+    ASSERT_EQ(m["trees"].size(), 6u) << m["name"];
+    std::set<std::string> configs;
+    for (const auto& t : m["trees"]) {
+      configs.insert(t["fitter"].get<std::string>() + "/" + t["split"].get<std::string>());
+      EXPECT_GT(t["total_surface_area_mm2"].get<double>(), 0.0);
+      EXPECT_GT(t["total_volume_mm3"].get<double>(), 0.0);
+      EXPECT_GE(t["nodes"].get<std::size_t>(), 1u);
+      EXPECT_EQ(t["build_ms"]["samples"].size(), 1u);
+    }
+    EXPECT_EQ(configs.size(), 6u);
+    EXPECT_EQ(m["fcl_obbrss_build_ms"]["samples"].size(), 1u);
+  }
+  EXPECT_EQ(scene_meshes, 4u);  // body and obstacles of each scene
+  if (data) {
+    EXPECT_GE(cad_meshes, 1u);
+  }
+  // Table III: every scene with every configuration.
+  ASSERT_EQ(j["plans"].size(), 12u);  // 2 scenes × 3 fitters × 2 split rules
+  for (const auto& p : j["plans"]) {
+    EXPECT_EQ(p["statuses"].size(), 1u);
+    EXPECT_GT(p["distance_queries"].get<std::uint64_t>(), 0u) << p["scene"] << " " << p["fitter"];
+    if (p["fitter"] == "pqp") {
+      EXPECT_DOUBLE_EQ(p["speedup_vs_pqp"]["median"].get<double>(), 1.0);
+    }
+  }
+  // Queries: 3 pose sets × (6 swept trees + FCL OBBRSS + FCL RSS) per scene.
+  EXPECT_EQ(j["queries"].size(), 2u * 3u * 8u);
+  EXPECT_EQ(j["claims"].size(), 4u);
+  EXPECT_TRUE(j["complete"].get<bool>());
+  EXPECT_EQ(j["ompl"]["status"], "not run (--no-ompl)");
+
+  const std::string md = slurp(out / "report.md");
+  for (const char* heading : {"Table I ", "Table II ", "Table III ", "Table IV ", "query times per pose set",
+                              "OMPL RRTConnect", "The paper's claims", "Command: `swept bench paper --scale test"})
+    EXPECT_NE(md.find(heading), std::string::npos) << heading;
+  for (const char* plot : {"speedup.svg", "query_distance.svg", "query_collide.svg", "trees.svg"}) {
+    const std::string svg = slurp(out / "img" / plot);
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u) << plot;
+    EXPECT_NE(svg.find("<rect x="), std::string::npos) << plot;
+    EXPECT_NE(svg.find("</svg>"), std::string::npos) << plot;
+    EXPECT_NE(md.find(std::string("img/") + plot), std::string::npos) << plot;
+  }
+}
+
+TEST_F(BenchPaper, RejectsBadOptions) {
+  CliRun r = run_cli("bench paper --scale huge --out " + (dir / "x").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("unknown scale 'huge'"), std::string::npos) << r.out;
+  r = run_cli("bench paper --runs 0 --out " + (dir / "x").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("--runs"), std::string::npos) << r.out;
+  r = run_cli("bench paper --only nowhere --out " + (dir / "x").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("unknown scene 'nowhere'"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace swept
