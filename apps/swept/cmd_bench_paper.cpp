@@ -127,6 +127,7 @@ std::string fmt_g(double v, int digits = 4) {
 /// Ratio a/b with its range from the runs' extremes: [a.min/b.max, a.max/b.min].
 struct Ratio {
   double value = std::numeric_limits<double>::quiet_NaN(), low = value, high = value;
+  bool ranged = false;  ///< both sides have more than one run
 };
 
 Ratio ratio_of(const Spread& a, const Spread& b) {
@@ -135,12 +136,13 @@ Ratio ratio_of(const Spread& a, const Spread& b) {
   r.value = a.median / b.median;
   r.low = a.min / b.max;
   r.high = a.max / b.min;
+  r.ranged = a.samples.size() > 1 && b.samples.size() > 1;
   return r;
 }
 
 std::string fmt_ratio(const Ratio& r, bool range) {
   if (!std::isfinite(r.value)) return "n/a";
-  if (!range) return fmt_fixed(r.value, 2) + "×";
+  if (!range || !r.ranged) return fmt_fixed(r.value, 2) + "×";
   return fmt_fixed(r.value, 2) + "× (" + fmt_fixed(r.low, 2) + "–" + fmt_fixed(r.high, 2) + ")";
 }
 
@@ -491,14 +493,15 @@ struct CadInput {
   const char* path;       ///< relative to the data directory
   double deflection;      ///< BRepMesh linear deflection (mm) for CAD formats; 0: the importer's default
   bool paper_only;
+  const char* file_unit;  ///< unit of a mesh file's coordinates; "": the importer's default (mm)
 };
 
 constexpr CadInput kCad[] = {
-    {"ros_industrial/kuka_kr10r1420_visual_base_link.stl", 0.0, false},
-    {"tessellated/engine_d0.05/engine_p01_CylinderHead_rle_brep.stl", 0.0, false},
-    {"occt/motor.stl", 0.0, true},
-    {"nist/nist_ctc_04_asme1_rd.stp", 0.05, true},
-    {"occt/hammer.brep", 0.05, true},
+    {"ros_industrial/kuka_kr10r1420_visual_base_link.stl", 0.0, false, "m"},  // the vendor's meshes are in metres
+    {"tessellated/engine_d0.05/engine_p01_CylinderHead_rle_brep.stl", 0.0, false, ""},
+    {"occt/motor.stl", 0.0, true, ""},
+    {"nist/nist_ctc_04_asme1_rd.stp", 0.05, true, ""},
+    {"occt/hammer.brep", 0.05, true, ""},
 };
 
 void run_cad(const PaperOptions& o, bool paper, Results& res) {
@@ -518,6 +521,7 @@ void run_cad(const PaperOptions& o, bool paper, Results& res) {
     }
     ImportOptions io;
     if (c.deflection > 0) io.linear_deflection = c.deflection;
+    io.file_unit = c.file_unit;
     auto model = import_mesh(file, io);
     if (!model) throw std::runtime_error(model.error().message);
     const std::vector<Triangle> tris = model->merged().triangles;
@@ -882,8 +886,8 @@ void write_plots(const Results& r, const fs::path& img, std::vector<std::string>
         }
       c.series.push_back(std::move(ser));
     }
-    write_svg(c, (img / "speedup.svg").string());
-    files.push_back("speedup.svg");
+    write_svg(c, (img / "paper-speedup.svg").string());
+    files.push_back("paper-speedup.svg");
 
     for (const bool dist : {true, false}) {
       BarChart q;
@@ -911,7 +915,7 @@ void write_plots(const Results& r, const fs::path& img, std::vector<std::string>
           }
         q.series.push_back(std::move(ser));
       }
-      const std::string file = dist ? "query_distance.svg" : "query_collide.svg";
+      const std::string file = dist ? "paper-query-distance.svg" : "paper-query-collide.svg";
       bool any = false;
       for (const BarSeries& s : q.series)
         for (double v : s.values) any = any || (std::isfinite(v) && v > 0);
@@ -941,8 +945,8 @@ void write_plots(const Results& r, const fs::path& img, std::vector<std::string>
       t.series.push_back(std::move(sa));
       t.series.push_back(std::move(bt));
     }
-    write_svg(t, (img / "trees.svg").string());
-    files.push_back("trees.svg");
+    write_svg(t, (img / "paper-trees.svg").string());
+    files.push_back("paper-trees.svg");
   }
 }
 

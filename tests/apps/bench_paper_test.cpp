@@ -112,13 +112,28 @@ TEST_F(BenchPaper, TestScaleProducesEveryTableTheJsonAndThePlots) {
   for (const char* heading : {"Table I ", "Table II ", "Table III ", "Table IV ", "query times per pose set",
                               "OMPL RRTConnect", "The paper's claims", "Command: `swept bench paper --scale test"})
     EXPECT_NE(md.find(heading), std::string::npos) << heading;
-  for (const char* plot : {"speedup.svg", "query_distance.svg", "query_collide.svg", "trees.svg"}) {
+  for (const char* plot : {"paper-speedup.svg", "paper-query-distance.svg", "paper-query-collide.svg", "paper-trees.svg"}) {
     const std::string svg = slurp(out / "img" / plot);
     EXPECT_EQ(svg.rfind("<svg", 0), 0u) << plot;
     EXPECT_NE(svg.find("<rect x="), std::string::npos) << plot;
     EXPECT_NE(svg.find("</svg>"), std::string::npos) << plot;
     EXPECT_NE(md.find(std::string("img/") + plot), std::string::npos) << plot;
   }
+
+  // --merge: a run split into processes gives back the same tables, measuring nothing.
+  const fs::path merged = dir / "merged";
+  const CliRun m = run_cli("bench paper --scale test --runs 1 --no-scenes --no-cad --no-ompl --merge " + out.string() +
+                           " --out " + merged.string());
+  ASSERT_EQ(m.code, 0) << m.out;
+  const auto jm = nlohmann::json::parse(slurp(merged / "results.json"));
+  EXPECT_EQ(jm["meshes"].size(), j["meshes"].size());
+  ASSERT_EQ(jm["plans"].size(), j["plans"].size());
+  for (std::size_t i = 0; i < j["plans"].size(); ++i) {
+    EXPECT_EQ(jm["plans"][i]["cpu_ms"]["samples"], j["plans"][i]["cpu_ms"]["samples"]);
+    EXPECT_EQ(jm["plans"][i]["distance_queries"], j["plans"][i]["distance_queries"]);
+  }
+  EXPECT_EQ(jm["queries"].size(), j["queries"].size());
+  EXPECT_NE(slurp(merged / "report.md").find("merged " + (out / "results.json").string()), std::string::npos);
 }
 
 TEST_F(BenchPaper, RejectsBadOptions) {
