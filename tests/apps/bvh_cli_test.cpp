@@ -1,6 +1,8 @@
 // `swept bvh` end to end: the table, the JSON document, and errors for bad input.
 #include "swept/io/mesh_io.h"
 
+#include "support/cli_support.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -17,14 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 
 int run_cli(const std::string& args, std::string& out) {
-  FILE* pipe = ::popen((std::string(SWEPT_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return -1;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  out.clear();
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const test::CliRun r = test::run_cli(args);
+  out = r.out;
+  return r.code;
 }
 
 TEST(BvhCli, JsonForEveryFitterAndSplit) {

@@ -3,6 +3,8 @@
 #include "swept/plan/problem.h"
 #include "swept/scenes/box_problems.h"
 
+#include "support/cli_support.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -18,23 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code = -1;
-  std::string out;
-};
+using test::CliRun;
 
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(SWEPT_CLI) + " plan " + args + " 2>/dev/null";
-  CliRun r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+CliRun run(const std::string& args) { return test::run_cli("plan " + args, /*with_stderr=*/false); }
 
 class PlanCli : public ::testing::Test {
  protected:
