@@ -92,8 +92,9 @@ struct Builder {
     }
     // The node's own fit orients its RSS (SPEC §2.3) and gives the split candidates (§2.2).
     const Fit f = detail::fit_ids(info.data(), node_ids, n, config.fitter);
-    detail::project_vertices(tris.data(), node_ids, n, f.axes, origin, s.projected);
-    out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), f.axes, origin);
+    Vec3 box_lo, box_hi;
+    detail::project_vertices(tris.data(), node_ids, n, f.axes, origin, s.projected, &box_lo, &box_hi);
+    out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size(), &box_lo, &box_hi), f.axes, origin);
     if (n <= static_cast<std::size_t>(config.leaf_size)) return out;
     out.leaf = false;
 

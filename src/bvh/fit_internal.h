@@ -40,18 +40,16 @@ struct RectExtents {
 };
 
 /// The smallest RSS (in the frame the points are given in) containing the points (SPEC §2.3).
-RectExtents rss_extents(const Vec3* points, std::size_t count);
-
-/// The RSS extents of two groups of triangles at once: `pts` holds 3 points per triangle and
-/// `side[i]` ∈ {0, 1} is triangle i's group. Both groups must be non-empty.
-void rss_extents_by_side(const Vec3* pts, std::size_t triangles, const std::uint8_t* side, RectExtents out[2]);
+/// `lo`/`hi`: the points' bounding box when the caller has it (saves a pass), else null.
+RectExtents rss_extents(const Vec3* points, std::size_t count, const Vec3* lo = nullptr, const Vec3* hi = nullptr);
 
 /// The RSS of extents given in the frame `axes` with origin `origin`.
 Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin);
 
-/// Projects the vertices of triangles `ids` onto `axes`, relative to `origin`: 3 per triangle.
+/// Projects the vertices of triangles `ids` onto `axes`, relative to `origin`: 3 per triangle;
+/// also their bounding box in that frame when `lo`/`hi` are given.
 void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
-                      const Vec3& origin, std::vector<Vec3>& out);
+                      const Vec3& origin, std::vector<Vec3>& out, Vec3* lo = nullptr, Vec3* hi = nullptr);
 
 /// The axes every fitter gives a single non-degenerate triangle (closed form, no eigen solve).
 /// False for a degenerate triangle.

@@ -207,15 +207,20 @@ namespace {
 // `run` (the vertices of one triangle), and `group(i)` ∈ [0, G) is run i's group. One pass for
 // the box, one for the edges, one for the corners.
 template <int G, class GroupOf>
-void extents_of_groups(const Vec3* pts, std::size_t runs, std::size_t run, GroupOf group, RectExtents* out) {
+void extents_of_groups(const Vec3* pts, std::size_t runs, std::size_t run, GroupOf group, RectExtents* out,
+                       const Vec3* known_lo = nullptr, const Vec3* known_hi = nullptr) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   Vec3 lo[G], hi[G];
-  for (int g = 0; g < G; ++g) lo[g] = Vec3::Constant(inf), hi[g] = Vec3::Constant(-inf);
-  for (std::size_t i = 0; i < runs; ++i) {
-    const int g = group(i);
-    for (std::size_t v = 0; v < run; ++v) {
-      lo[g] = lo[g].cwiseMin(pts[i * run + v]);
-      hi[g] = hi[g].cwiseMax(pts[i * run + v]);
+  if (known_lo && known_hi) {  // the caller measured the box already
+    for (int g = 0; g < G; ++g) lo[g] = known_lo[g], hi[g] = known_hi[g];
+  } else {
+    for (int g = 0; g < G; ++g) lo[g] = Vec3::Constant(inf), hi[g] = Vec3::Constant(-inf);
+    for (std::size_t i = 0; i < runs; ++i) {
+      const int g = group(i);
+      for (std::size_t v = 0; v < run; ++v) {
+        lo[g] = lo[g].cwiseMin(pts[i * run + v]);
+        hi[g] = hi[g].cwiseMax(pts[i * run + v]);
+      }
     }
   }
   double r2[G], zc[G], xlo[G], xhi[G], ylo[G], yhi[G];
@@ -291,15 +296,11 @@ void extents_of_groups(const Vec3* pts, std::size_t runs, std::size_t run, Group
 
 }  // namespace
 
-RectExtents rss_extents(const Vec3* pts, std::size_t count) {
+RectExtents rss_extents(const Vec3* pts, std::size_t count, const Vec3* lo, const Vec3* hi) {
   RectExtents e;
   if (count == 0) return e;
-  extents_of_groups<1>(pts, count, 1, [](std::size_t) { return 0; }, &e);
+  extents_of_groups<1>(pts, count, 1, [](std::size_t) { return 0; }, &e, lo, hi);
   return e;
-}
-
-void rss_extents_by_side(const Vec3* pts, std::size_t triangles, const std::uint8_t* side, RectExtents out[2]) {
-  extents_of_groups<2>(pts, triangles, 3, [side](std::size_t i) { return static_cast<int>(side[i]); }, out);
 }
 
 Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
@@ -323,15 +324,21 @@ Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
 }
 
 void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
-                      const Vec3& origin, std::vector<Vec3>& out) {
+                      const Vec3& origin, std::vector<Vec3>& out, Vec3* lo, Vec3* hi) {
   const Mat3 at = axes.transpose();
   out.resize(3 * n);
+  Vec3 box_lo = Vec3::Constant(std::numeric_limits<double>::infinity()), box_hi = -box_lo;
   for (std::size_t j = 0; j < n; ++j) {
     const Triangle& t = tris[ids[j]];
-    out[3 * j] = at * (t.p - origin);
-    out[3 * j + 1] = at * (t.q - origin);
-    out[3 * j + 2] = at * (t.r - origin);
+    for (int v = 0; v < 3; ++v) {
+      const Vec3 p = at * (t[v] - origin);
+      out[3 * j + v] = p;
+      box_lo = box_lo.cwiseMin(p);
+      box_hi = box_hi.cwiseMax(p);
+    }
   }
+  if (lo) *lo = box_lo;
+  if (hi) *hi = box_hi;
 }
 
 Rss fit_rss_ids(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
