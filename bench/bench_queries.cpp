@@ -2,6 +2,7 @@
 // collide and distance on a CAD mesh pair at near-contact and far poses.
 //   bench_queries [--benchmark_filter=...]      (mesh pair: SWEPT_BENCH_A / SWEPT_BENCH_B,
 //                                                default occt/motor.stl against itself)
+#include "../apps/swept/seeded_rng.h"
 #include "swept/io/mesh_io.h"
 #include "swept/query/query.h"
 
@@ -24,28 +25,7 @@ namespace {
 
 using namespace swept;
 
-struct Rng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  Vec3 direction() {
-    for (;;) {
-      const Vec3 v(2 * uniform() - 1, 2 * uniform() - 1, 2 * uniform() - 1);
-      if (v.norm() > 1e-3 && v.norm() <= 1) return v.normalized();
-    }
-  }
-  Mat3 rotation() {
-    const double u1 = uniform(), u2 = uniform(), u3 = uniform();
-    const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-    const double t2 = 2 * std::numbers::pi * u2, t3 = 2 * std::numbers::pi * u3;
-    return Quat(b * std::cos(t3), a * std::sin(t2), a * std::cos(t2), b * std::sin(t3)).normalized().toRotationMatrix();
-  }
-};
+using Rng = swept::cli::SeededRng;
 
 std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl_model(const std::vector<Triangle>& tris) {
   auto m = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();

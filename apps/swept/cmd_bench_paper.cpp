@@ -10,6 +10,7 @@
 //   seeded pose sets per scene (overlapping, near contact, far), and OMPL RRTConnect + FCL on the
 //   same problems (merged from the `bench_plan` program when it is built).
 // Writes results.json, report.md and SVG plots (img/) into the output directory.
+#include "seeded_rng.h"
 #include "commands.h"
 #include "fcl_peer.h"
 #include "output.h"
@@ -148,31 +149,7 @@ std::string fmt_ratio(const Ratio& r, bool range) {
 
 // ---- seeded pose sets --------------------------------------------------------------------------
 
-/// SplitMix64: the same pose sets on every platform.
-struct SplitMix {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  Vec3 on_sphere() {
-    for (;;) {
-      const Vec3 v(2 * unit() - 1, 2 * unit() - 1, 2 * unit() - 1);
-      const double n = v.norm();
-      if (n > 1e-3 && n <= 1.0) return v / n;
-    }
-  }
-  /// A uniformly distributed rotation (Shoemake's subgroup algorithm).
-  Mat3 rotation() {
-    const double u1 = unit(), u2 = unit(), u3 = unit();
-    const double s1 = std::sqrt(1 - u1), s2 = std::sqrt(u1);
-    const double a = 2 * std::numbers::pi * u2, b = 2 * std::numbers::pi * u3;
-    return Quat(s2 * std::cos(b), s1 * std::sin(a), s1 * std::cos(a), s2 * std::sin(b)).normalized().toRotationMatrix();
-  }
-};
+using SplitMix = SeededRng;
 
 struct PoseSet {
   std::string name;
@@ -193,7 +170,7 @@ std::vector<PoseSet> make_pose_sets(const PlanScene& scene, int count, std::uint
   const int attempts = 400 * count;
   for (int k = 0; k < attempts && static_cast<int>(sets[0].poses.size()) < count; ++k) {
     const Mat3 r = rng.rotation();
-    const Vec3 u(rng.unit(), rng.unit(), rng.unit());
+    const Vec3 u(rng.uniform(), rng.uniform(), rng.uniform());
     const Vec3 target = box_a.min + u.cwiseProduct(box_a.max - box_a.min);
     const Pose p = place(r, target);
     if (collide(a, id, b, p).colliding) sets[0].poses.push_back(p);
@@ -204,7 +181,7 @@ std::vector<PoseSet> make_pose_sets(const PlanScene& scene, int count, std::uint
   const std::size_t n_overlap = sets[0].poses.size();
   for (int k = 0; n_overlap > 0 && k < 4 * count && static_cast<int>(sets[1].poses.size()) < count; ++k) {
     const Pose& p0 = sets[0].poses[static_cast<std::size_t>(k) % n_overlap];
-    const Vec3 dir = rng.on_sphere();
+    const Vec3 dir = rng.direction();
     auto moved = [&](double s) { return Pose{p0.rotation, p0.translation + s * dir}; };
     double lo = 0.0, hi = a.extent + b.extent;
     for (int it = 0; it < 80; ++it) {
@@ -222,8 +199,8 @@ std::vector<PoseSet> make_pose_sets(const PlanScene& scene, int count, std::uint
   }
   for (int k = 0; k < count; ++k) {
     const Mat3 r = rng.rotation();
-    const double reach = 0.5 * (a.extent + b.extent) * (1.1 + 0.9 * rng.unit());
-    sets[2].poses.push_back(place(r, ca + reach * rng.on_sphere()));
+    const double reach = 0.5 * (a.extent + b.extent) * (1.1 + 0.9 * rng.uniform());
+    sets[2].poses.push_back(place(r, ca + reach * rng.direction()));
   }
   return sets;
 }

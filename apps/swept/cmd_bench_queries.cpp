@@ -2,6 +2,7 @@
 // per fitter) and FCL's OBBRSS and RSS trees, side by side in the same run, on three seeded
 // pose sets (overlapping, near contact, far), and the speedup of a distance batch on two
 // threads.
+#include "seeded_rng.h"
 #include "commands.h"
 #include "fcl_peer.h"
 #include "output.h"
@@ -35,30 +36,7 @@ struct BenchQueriesOptions {
   bool json = false;
 };
 
-/// SplitMix64: the same pose sets on every platform.
-struct Rng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  Vec3 direction() {
-    for (;;) {
-      const Vec3 v(2 * uniform() - 1, 2 * uniform() - 1, 2 * uniform() - 1);
-      const double n = v.norm();
-      if (n > 1e-3 && n <= 1.0) return v / n;
-    }
-  }
-  Mat3 rotation() {  // Shoemake's uniform quaternion
-    const double u1 = uniform(), u2 = uniform(), u3 = uniform();
-    const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-    const double t2 = 2 * std::numbers::pi * u2, t3 = 2 * std::numbers::pi * u3;
-    return Quat(b * std::cos(t3), a * std::sin(t2), a * std::cos(t2), b * std::sin(t3)).normalized().toRotationMatrix();
-  }
-};
+using Rng = SeededRng;
 
 std::vector<Triangle> load(const std::string& file) {
   Result<ImportedModel> m = import_mesh(file);
