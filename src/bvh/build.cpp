@@ -46,15 +46,15 @@ struct Pending {
   std::uint32_t begin = 0, end = 0;
 };
 
-// What processing a node produced: its RSS, and where its triangles split (or a leaf).
+// What processing a node produced besides its RSS: where its triangles split (or a leaf).
 struct Outcome {
-  Rss rss;
   bool leaf = true;
   std::uint32_t middle = 0;  // children: [begin, middle) and [middle, end)
 };
 
 struct Scratch {
   std::vector<Vec3> projected;
+  std::vector<std::uint32_t> outside;  // projected vertices that may sit at an RSS corner
   std::vector<std::uint32_t> ids[2];
   std::vector<std::uint8_t> side[3];
 };
@@ -77,7 +77,8 @@ struct Builder {
     return node.begin + static_cast<std::uint32_t>(s.ids[0].size());
   }
 
-  Outcome process(const Pending& node) {
+  // Fits the node's RSS (in the local frame) into `rss` and decides its split.
+  Outcome process(const Pending& node, Rss& rss) {
     Outcome out;
     Scratch& s = scratch.local();
     const std::size_t n = node.end - node.begin;
@@ -87,28 +88,28 @@ struct Builder {
     if (n == 1 && detail::single_triangle_axes(tris[node_ids[0]], leaf_axes)) {
       // A one-triangle leaf: the fitters' axes in closed form.
       detail::project_vertices(tris.data(), node_ids, n, leaf_axes, origin, s.projected);
-      out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), leaf_axes, origin);
+      rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), leaf_axes, origin);
       return out;
     }
     // The node's own fit orients its RSS (SPEC §2.3) and gives the split candidates (§2.2).
     const Fit f = detail::fit_ids(info.data(), node_ids, n, config.fitter);
     Vec3 box_lo, box_hi;
     detail::project_vertices(tris.data(), node_ids, n, f.axes, origin, s.projected, &box_lo, &box_hi);
-    out.rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size(), &box_lo, &box_hi), f.axes, origin);
-    if (n <= static_cast<std::size_t>(config.leaf_size)) return out;
-    out.leaf = false;
+    detail::RssEdges edges(box_lo, box_hi);
+    s.outside.clear();
 
     // Candidate planes through the split position, across e1, e2, e3 (min-sa) or e1 only
     // (largest). The cost of a candidate is SA(L) + SA(R), where each subset's RSS is the one
     // enclosing the subset's bounding box in the node's frame (rectangle: the box's e1 × e2
-    // extent; radius: half its e3 extent). All candidates are measured in one pass over the
-    // projections already made for the node's own RSS.
+    // extent; radius: half its e3 extent). All candidates are measured in the same pass over the
+    // projections as the edges of the node's own RSS.
+    const bool leaf = n <= static_cast<std::size_t>(config.leaf_size);
     const Vec3 split = f.axes.transpose() * (f.split_point - origin);
-    const int candidates = config.split == SplitRule::min_sa ? 3 : 1;
+    const int candidates = leaf ? 0 : config.split == SplitRule::min_sa ? 3 : 1;
     constexpr double inf = std::numeric_limits<double>::infinity();
     Vec3 lo[3][2], hi[3][2];
     std::size_t left[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
+    for (int a = 0; a < candidates; ++a) {
       s.side[a].resize(n);
       lo[a][0] = lo[a][1] = Vec3::Constant(inf);
       hi[a][0] = hi[a][1] = Vec3::Constant(-inf);
@@ -117,6 +118,11 @@ struct Builder {
       const Vec3& p0 = s.projected[3 * j];
       const Vec3& p1 = s.projected[3 * j + 1];
       const Vec3& p2 = s.projected[3 * j + 2];
+      const auto k = static_cast<std::uint32_t>(3 * j);
+      if (edges.add(p0)) s.outside.push_back(k);
+      if (edges.add(p1)) s.outside.push_back(k + 1);
+      if (edges.add(p2)) s.outside.push_back(k + 2);
+      if (candidates == 0) continue;
       const Vec3 tlo = p0.cwiseMin(p1).cwiseMin(p2), thi = p0.cwiseMax(p1).cwiseMax(p2);
       const Vec3 centre = (p0 + p1 + p2) / 3.0;
       for (int a = 0; a < candidates; ++a) {
@@ -127,6 +133,10 @@ struct Builder {
         hi[a][right] = hi[a][right].cwiseMax(thi);
       }
     }
+    rss = detail::make_rss(edges.finish(s.projected.data(), s.outside.data(), s.outside.size()), f.axes, origin);
+    if (leaf) return out;
+    out.leaf = false;
+
     double best_cost = inf;
     int best = -1;
     for (int a = 0; a < candidates; ++a) {
@@ -200,48 +210,57 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   Bvh bvh;
   bvh.config = config;
   bvh.extent = box.extent();
-  bvh.nodes.reserve(2 * n / static_cast<std::size_t>(config.leaf_size) + 1);
+  // Every split leaves both sides non-empty, so there are at most n leaves and 2n − 1 nodes:
+  // reserved once, so that each level's nodes are written in place, in parallel.
+  bvh.nodes.reserve(2 * n - 1);
+  std::size_t used = 1;
 
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
-  bvh.nodes.emplace_back();
   std::vector<Outcome> outcomes;
+  std::vector<Pending> next;
   while (!level.empty()) {
     ++bvh.depth;
+    bvh.nodes.resize(used);
     outcomes.assign(level.size(), Outcome{});
+    auto run = [&](std::size_t i) {
+      outcomes[i] = builder.process(level[i], bvh.nodes[static_cast<std::size_t>(level[i].node)].bv);
+    };
     if (config.parallel && level.size() > 1) {
-      tbb::parallel_for(std::size_t{0}, level.size(),
-                        [&](std::size_t i) { outcomes[i] = builder.process(level[i]); });
+      tbb::parallel_for(std::size_t{0}, level.size(), run);
     } else {
-      for (std::size_t i = 0; i < level.size(); ++i) outcomes[i] = builder.process(level[i]);
+      for (std::size_t i = 0; i < level.size(); ++i) run(i);
     }
     // Children are numbered serially, in level order: the same tree at any thread count.
-    std::vector<Pending> next;
+    next.clear();
     for (std::size_t i = 0; i < level.size(); ++i) {
       const Pending& p = level[i];
       const Outcome& o = outcomes[i];
       Node& node = bvh.nodes[static_cast<std::size_t>(p.node)];
-      node.bv = o.rss;
       node.bv.center += offset;
       if (o.leaf) {
         node.first = static_cast<std::int32_t>(p.begin);
         node.count = static_cast<std::int32_t>(p.end - p.begin);
         continue;
       }
-      const auto child = static_cast<std::int32_t>(bvh.nodes.size());
+      const auto child = static_cast<std::int32_t>(used);
+      used += 2;
       node.first = child;
       node.count = 0;
-      bvh.nodes.emplace_back();
-      bvh.nodes.emplace_back();
       next.push_back({child, p.begin, o.middle});
       next.push_back({child + 1, o.middle, p.end});
     }
-    level = std::move(next);
+    std::swap(level, next);
   }
+  if (bvh.nodes.capacity() > used + used / 4) bvh.nodes.shrink_to_fit();  // large leaves
 
   bvh.triangles.resize(n);
-  bvh.triangle_ids = ids;
-  for (std::size_t i = 0; i < n; ++i) bvh.triangles[i] = triangles[ids[i]];
-  bvh.nodes.shrink_to_fit();
+  auto gather = [&](std::size_t i) { bvh.triangles[i] = triangles[ids[i]]; };
+  if (config.parallel) {
+    tbb::parallel_for(std::size_t{0}, n, gather);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) gather(i);
+  }
+  bvh.triangle_ids = std::move(ids);
   return bvh;
 }
 

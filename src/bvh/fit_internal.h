@@ -4,6 +4,8 @@
 // fitted exactly like the same model near it.
 #include "swept/bvh/fitter.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +39,32 @@ Rss fit_rss_ids(const Triangle* tris, const std::uint32_t* ids, std::size_t n, c
 /// An RSS in its own frame: rectangle [xlo, xhi] × [ylo, yhi] at height zc, radius r.
 struct RectExtents {
   double xlo = 0, xhi = 0, ylo = 0, yhi = 0, zc = 0, r = 0;
+};
+
+/// The RSS extents of a point set in three steps, for callers that fuse them with other passes:
+/// construct from the set's bounding box; add() every point (the tightest edges ignoring the
+/// rounded corners; true when the point lies outside the starting rectangle and so may sit at a
+/// corner); finish() with the points add() returned true for (or all points), in order.
+struct RssEdges {
+  double r, zc, r2, xlo, xhi, ylo, yhi;
+
+  RssEdges(const Vec3& lo, const Vec3& hi);
+
+  /// A point may stick out of an edge by at most its in-plane radius ρ = √(r² − dz²).
+  bool add(const Vec3& p) {
+    if (p.x() >= xlo && p.x() <= xhi && p.y() >= ylo && p.y() <= yhi) return false;
+    const double dz = p.z() - zc;
+    const double rho = std::sqrt(std::max(r2 - dz * dz, 0.0));
+    xlo = std::min(xlo, p.x() + rho);
+    xhi = std::max(xhi, p.x() - rho);
+    ylo = std::min(ylo, p.y() + rho);
+    yhi = std::max(yhi, p.y() - rho);
+    return true;
+  }
+
+  /// Corners. `outside`: indices into `pts` of the points add() returned true for, or null for
+  /// all `count` points.
+  RectExtents finish(const Vec3* pts, const std::uint32_t* outside, std::size_t count);
 };
 
 /// The smallest RSS (in the frame the points are given in) containing the points (SPEC §2.3).

@@ -83,8 +83,21 @@ bool single_triangle_axes(const Triangle& t, Mat3& axes) {
     const double x = d.dot(u), y = d.dot(v);
     a += x * x, b += x * y, c += y * y;
   }
-  const double theta = 0.5 * std::atan2(2.0 * b, a - c);  // the major axis of [[a b] [b c]]
-  Vec3 e1 = std::cos(theta) * u + std::sin(theta) * v;
+  // The major axis of [[a b] [b c]] is at θ = ½·atan2(2b, a − c); cos θ and sin θ by the
+  // half-angle formulas (each from the better-conditioned side), without calling trigonometry.
+  const double h = std::hypot(2.0 * b, a - c);
+  double cos_t = 1.0, sin_t = 0.0;
+  if (h > 0.0) {
+    const double cos2 = (a - c) / h, sin2 = 2.0 * b / h;
+    if (cos2 >= 0.0) {
+      cos_t = std::sqrt(0.5 * (1.0 + cos2));
+      sin_t = sin2 / (2.0 * cos_t);
+    } else {
+      sin_t = std::copysign(std::sqrt(0.5 * (1.0 - cos2)), sin2);
+      cos_t = sin2 / (2.0 * sin_t);
+    }
+  }
+  Vec3 e1 = cos_t * u + sin_t * v;
   Eigen::Index i;
   e1.cwiseAbs().maxCoeff(&i);
   if (e1[i] < 0) e1 = -e1;
@@ -145,17 +158,6 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
     used = Fitter::pqp;
     out.fell_back = true;
   }
-  double a_min = 0.0;
-  if (used == Fitter::inertia) {
-    // A_min: the smallest area that is ≥ ε (smaller, degenerate triangles do not lower it).
-    a_min = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n; ++j) {
-      const double a = info[ids[j]].area;
-      if (a >= eps && a < a_min) a_min = a;
-    }
-    if (!std::isfinite(a_min)) a_min = s.max_a;  // every triangle below ε, but their sum is not
-  }
-
   Vec3 c;
   double k_center, k_scatter, scale;
   switch (used) {
@@ -174,15 +176,17 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
       break;
   }
 
-  // Pass 2: the matrix, six unique entries.
+  // Pass 2: the matrix, six unique entries. INERTIA_FIT's weights A_i / A_min share the factor
+  // 1 / A_min, applied once at the end, so A_min is found in the same pass: the smallest area
+  // that is ≥ ε (smaller, degenerate triangles do not lower it).
   double acc[6] = {0, 0, 0, 0, 0, 0};
+  double a_min = std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < n; ++j) {
     const TriInfo& t = info[ids[j]];
-    double w;
-    switch (used) {
-      case Fitter::pqp: w = 1.0; break;
-      case Fitter::rapid2: w = t.area; break;
-      default: w = t.area / a_min; break;
+    double w = 1.0;
+    if (used != Fitter::pqp) {
+      w = t.area;
+      if (t.area >= eps && t.area < a_min) a_min = t.area;
     }
     const Vec3 d = t.m - c;
     const double wc = w * k_center, ws = w * k_scatter;
@@ -193,6 +197,10 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
     acc[4] += wc * d.y() * d.z() + ws * t.s[4];
     acc[5] += wc * d.z() * d.z() + ws * t.s[5];
   }
+  if (used == Fitter::inertia) {
+    if (!std::isfinite(a_min)) a_min = s.max_a;  // every triangle below ε, but their sum is not
+    scale /= a_min;
+  }
   Mat3 m;
   m << acc[0], acc[1], acc[2], acc[1], acc[3], acc[4], acc[2], acc[4], acc[5];
   m *= scale;
@@ -201,106 +209,71 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
   return out;
 }
 
-namespace {
-
-// The RSS extents (SPEC §2.3) of several groups of points at once: points come in runs of
-// `run` (the vertices of one triangle), and `group(i)` ∈ [0, G) is run i's group. One pass for
-// the box, one for the edges, one for the corners.
-template <int G, class GroupOf>
-void extents_of_groups(const Vec3* pts, std::size_t runs, std::size_t run, GroupOf group, RectExtents* out,
-                       const Vec3* known_lo = nullptr, const Vec3* known_hi = nullptr) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Vec3 lo[G], hi[G];
-  if (known_lo && known_hi) {  // the caller measured the box already
-    for (int g = 0; g < G; ++g) lo[g] = known_lo[g], hi[g] = known_hi[g];
-  } else {
-    for (int g = 0; g < G; ++g) lo[g] = Vec3::Constant(inf), hi[g] = Vec3::Constant(-inf);
-    for (std::size_t i = 0; i < runs; ++i) {
-      const int g = group(i);
-      for (std::size_t v = 0; v < run; ++v) {
-        lo[g] = lo[g].cwiseMin(pts[i * run + v]);
-        hi[g] = hi[g].cwiseMax(pts[i * run + v]);
-      }
-    }
-  }
-  double r2[G], zc[G], xlo[G], xhi[G], ylo[G], yhi[G];
-  for (int g = 0; g < G; ++g) {
-    const double r = 0.5 * (hi[g].z() - lo[g].z());
-    out[g].r = r;
-    zc[g] = out[g].zc = 0.5 * (hi[g].z() + lo[g].z());
-    r2[g] = r * r;
-    // Start from bounds the result cannot exceed (the extreme vertex, moved by at most r), so
-    // that vertices well inside skip the square root below.
-    xlo[g] = lo[g].x() + r;
-    xhi[g] = hi[g].x() - r;
-    ylo[g] = lo[g].y() + r;
-    yhi[g] = hi[g].y() - r;
-  }
-  // The tightest edges ignoring the rounded corners: each vertex may stick out of an edge by at
-  // most its in-plane radius ρ = √(r² − dz²).
-  for (std::size_t i = 0; i < runs; ++i) {
-    const int g = group(i);
-    for (std::size_t v = 0; v < run; ++v) {
-      const Vec3& p = pts[i * run + v];
-      if (p.x() >= xlo[g] && p.x() <= xhi[g] && p.y() >= ylo[g] && p.y() <= yhi[g]) continue;
-      const double dz = p.z() - zc[g];
-      const double rho = std::sqrt(std::max(r2[g] - dz * dz, 0.0));
-      xlo[g] = std::min(xlo[g], p.x() + rho);
-      xhi[g] = std::max(xhi[g], p.x() - rho);
-      ylo[g] = std::min(ylo[g], p.y() + rho);
-      yhi[g] = std::max(yhi[g], p.y() - rho);
-    }
-  }
-  for (int g = 0; g < G; ++g) {
-    if (xlo[g] > xhi[g]) xlo[g] = xhi[g] = 0.5 * (xlo[g] + xhi[g]);
-    if (ylo[g] > yhi[g]) ylo[g] = yhi[g] = 0.5 * (ylo[g] + yhi[g]);
-  }
-  // Corners: a vertex outside both an x and a y edge must be within ρ of the corner; if not,
-  // push one edge outwards (the cheaper in area) just enough. Edges only ever move outwards, so
-  // earlier vertices stay inside.
-  for (std::size_t i = 0; i < runs; ++i) {
-    const int g = group(i);
-    for (std::size_t v = 0; v < run; ++v) {
-      const Vec3& p = pts[i * run + v];
-      const double dx = std::max(std::max(xlo[g] - p.x(), p.x() - xhi[g]), 0.0);
-      const double dy = std::max(std::max(ylo[g] - p.y(), p.y() - yhi[g]), 0.0);
-      if (dx == 0.0 || dy == 0.0) continue;  // beside an edge: inside by the pass above
-      const double dz = p.z() - zc[g];
-      const double rho2 = std::max(r2[g] - dz * dz, 0.0);
-      if (dx * dx + dy * dy <= rho2) continue;
-      const double rho = std::sqrt(rho2);
-      const double w = xhi[g] - xlo[g], h = yhi[g] - ylo[g];
-      // Either edge alone can take the vertex (the pass above keeps dx, dy ≤ ρ up to rounding).
-      const double need_x = dx - std::sqrt(std::max(rho2 - dy * dy, 0.0));
-      const double need_y = dy - std::sqrt(std::max(rho2 - dx * dx, 0.0));
-      if (dy <= rho && (dx > rho || need_x * h <= need_y * w)) {
-        const double allowed = std::sqrt(std::max(rho2 - dy * dy, 0.0));
-        if (p.x() < xlo[g]) xlo[g] = p.x() + allowed;
-        else xhi[g] = p.x() - allowed;
-      } else if (dx <= rho) {
-        const double allowed = std::sqrt(std::max(rho2 - dx * dx, 0.0));
-        if (p.y() < ylo[g]) ylo[g] = p.y() + allowed;
-        else yhi[g] = p.y() - allowed;
-      } else {  // rounding pushed both beyond ρ: take the vertex's x in, then y to within ρ
-        if (p.x() < xlo[g]) xlo[g] = p.x();
-        else xhi[g] = p.x();
-        if (p.y() < ylo[g]) ylo[g] = p.y() + rho;
-        else yhi[g] = p.y() - rho;
-      }
-    }
-  }
-  for (int g = 0; g < G; ++g) {
-    out[g].xlo = xlo[g], out[g].xhi = xhi[g], out[g].ylo = ylo[g], out[g].yhi = yhi[g];
-  }
+RssEdges::RssEdges(const Vec3& lo, const Vec3& hi) {
+  r = 0.5 * (hi.z() - lo.z());
+  zc = 0.5 * (hi.z() + lo.z());
+  r2 = r * r;
+  // Start from bounds the result cannot exceed (the extreme vertex, moved by at most r), so
+  // that vertices well inside skip the square root in add().
+  xlo = lo.x() + r;
+  xhi = hi.x() - r;
+  ylo = lo.y() + r;
+  yhi = hi.y() - r;
 }
 
-}  // namespace
+RectExtents RssEdges::finish(const Vec3* pts, const std::uint32_t* outside, std::size_t count) {
+  if (xlo > xhi) xlo = xhi = 0.5 * (xlo + xhi);
+  if (ylo > yhi) ylo = yhi = 0.5 * (ylo + yhi);
+  // Corners: a vertex outside both an x and a y edge must be within ρ of the corner; if not,
+  // push one edge outwards (the cheaper in area) just enough. Edges only ever move outwards, so
+  // earlier vertices stay inside, and a vertex add() found inside stays inside: only the
+  // vertices add() reported need a look.
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3& p = outside ? pts[outside[i]] : pts[i];
+    const double dx = std::max(std::max(xlo - p.x(), p.x() - xhi), 0.0);
+    const double dy = std::max(std::max(ylo - p.y(), p.y() - yhi), 0.0);
+    if (dx == 0.0 || dy == 0.0) continue;  // beside an edge: inside by add()
+    const double dz = p.z() - zc;
+    const double rho2 = std::max(r2 - dz * dz, 0.0);
+    if (dx * dx + dy * dy <= rho2) continue;
+    const double rho = std::sqrt(rho2);
+    const double w = xhi - xlo, h = yhi - ylo;
+    // Either edge alone can take the vertex (add() keeps dx, dy ≤ ρ up to rounding).
+    const double need_x = dx - std::sqrt(std::max(rho2 - dy * dy, 0.0));
+    const double need_y = dy - std::sqrt(std::max(rho2 - dx * dx, 0.0));
+    if (dy <= rho && (dx > rho || need_x * h <= need_y * w)) {
+      const double allowed = std::sqrt(std::max(rho2 - dy * dy, 0.0));
+      if (p.x() < xlo) xlo = p.x() + allowed;
+      else xhi = p.x() - allowed;
+    } else if (dx <= rho) {
+      const double allowed = std::sqrt(std::max(rho2 - dx * dx, 0.0));
+      if (p.y() < ylo) ylo = p.y() + allowed;
+      else yhi = p.y() - allowed;
+    } else {  // rounding pushed both beyond ρ: take the vertex's x in, then y to within ρ
+      if (p.x() < xlo) xlo = p.x();
+      else xhi = p.x();
+      if (p.y() < ylo) ylo = p.y() + rho;
+      else yhi = p.y() - rho;
+    }
+  }
+  return RectExtents{xlo, xhi, ylo, yhi, zc, r};
+}
 
 RectExtents rss_extents(const Vec3* pts, std::size_t count, const Vec3* lo, const Vec3* hi) {
-  RectExtents e;
-  if (count == 0) return e;
-  extents_of_groups<1>(pts, count, 1, [](std::size_t) { return 0; }, &e, lo, hi);
-  return e;
+  if (count == 0) return RectExtents{};
+  Vec3 box_lo, box_hi;
+  if (lo && hi) {  // the caller measured the box already
+    box_lo = *lo, box_hi = *hi;
+  } else {
+    box_lo = box_hi = pts[0];
+    for (std::size_t i = 1; i < count; ++i) {
+      box_lo = box_lo.cwiseMin(pts[i]);
+      box_hi = box_hi.cwiseMax(pts[i]);
+    }
+  }
+  RssEdges edges(box_lo, box_hi);
+  for (std::size_t i = 0; i < count; ++i) edges.add(pts[i]);
+  return edges.finish(pts, nullptr, count);
 }
 
 Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
