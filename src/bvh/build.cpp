@@ -8,6 +8,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,20 @@ namespace {
 
 using detail::TriInfo;
 
+// Interleaves the low 21 bits of x, y and z (clamped cell coordinates) into a 63-bit Morton code.
+std::uint64_t morton_code(const Vec3& cell) {
+  auto spread = [](double v) {
+    std::uint64_t x = static_cast<std::uint64_t>(std::clamp(v, 0.0, 2097151.0));
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+  };
+  return spread(cell.x()) | spread(cell.y()) << 1 | spread(cell.z()) << 2;
+}
+
 // A node waiting to be processed: its index and its triangle range in `ids`.
 struct Pending {
   std::int32_t node = 0;
@@ -61,8 +76,7 @@ struct Scratch {
 
 struct Builder {
   const BuildConfig& config;
-  const std::vector<Triangle>& tris;  // local frame
-  const std::vector<TriInfo>& info;
+  const std::vector<TriInfo>& info;  // local frame
   std::vector<std::uint32_t>& ids;
   tbb::enumerable_thread_specific<Scratch> scratch;
 
@@ -78,23 +92,22 @@ struct Builder {
   }
 
   // Fits the node's RSS (in the local frame) into `rss` and decides its split.
-  Outcome process(const Pending& node, Rss& rss) {
+  Outcome process(const Pending& node, Rss& rss, Scratch& s) {
     Outcome out;
-    Scratch& s = scratch.local();
     const std::size_t n = node.end - node.begin;
     const std::uint32_t* node_ids = ids.data() + node.begin;
-    const Vec3 origin = tris[node_ids[0]].p;
+    const Vec3 origin = info[node_ids[0]].t.p;
     Mat3 leaf_axes;
-    if (n == 1 && detail::single_triangle_axes(tris[node_ids[0]], leaf_axes)) {
+    if (n == 1 && detail::single_triangle_axes(info[node_ids[0]].t, leaf_axes)) {
       // A one-triangle leaf: the fitters' axes in closed form.
-      detail::project_vertices(tris.data(), node_ids, n, leaf_axes, origin, s.projected);
+      detail::project_vertices(info.data(), node_ids, n, leaf_axes, origin, s.projected);
       rss = detail::make_rss(detail::rss_extents(s.projected.data(), s.projected.size()), leaf_axes, origin);
       return out;
     }
     // The node's own fit orients its RSS (SPEC §2.3) and gives the split candidates (§2.2).
     const Fit f = detail::fit_ids(info.data(), node_ids, n, config.fitter);
     Vec3 box_lo, box_hi;
-    detail::project_vertices(tris.data(), node_ids, n, f.axes, origin, s.projected, &box_lo, &box_hi);
+    detail::project_vertices(info.data(), node_ids, n, f.axes, origin, s.projected, &box_lo, &box_hi);
     detail::RssEdges edges(box_lo, box_hi);
     s.outside.clear();
 
@@ -162,7 +175,7 @@ struct Builder {
     auto first = ids.begin() + node.begin, last = ids.begin() + node.end;
     const std::size_t half = n / 2;
     std::nth_element(first, first + half, last, [&](std::uint32_t x, std::uint32_t y) {
-      const double px = info[x].m.dot(e1), py = info[y].m.dot(e1);
+      const double px = info[x].centroid().dot(e1), py = info[y].centroid().dot(e1);
       return px < py || (px == py && x < y);
     });
     std::sort(first, first + half);
@@ -191,22 +204,43 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   }
   const Vec3 offset = box.center();
   const std::size_t n = triangles.size();
-  std::vector<Triangle> local(n);
-  std::vector<TriInfo> info(n);
-  auto prepare = [&](std::size_t i) {
-    const Triangle& t = triangles[i];
-    local[i] = Triangle{t.p - offset, t.q - offset, t.r - offset};
-    info[i] = detail::make_tri_info(local[i]);
+  auto for_each_index = [&](auto&& body) {
+    if (config.parallel) {
+      tbb::parallel_for(std::size_t{0}, n, body);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) body(i);
+    }
   };
+
+  // The builder works on copies in Morton order of the centroids, so that a node's triangles
+  // lie close together in memory (on a 1.3M-triangle CAD mesh this alone makes the build about
+  // a quarter faster than in the file's order). The order is a total one (ties by input index),
+  // so the tree is still a function of the input alone.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  const Vec3 size = box.max - box.min;
+  const Vec3 cells = Vec3::NullaryExpr([&](Eigen::Index k) { return size[k] > 0.0 ? 2097151.0 / size[k] : 0.0; });
+  for_each_index([&](std::size_t i) {
+    const Triangle& t = triangles[i];
+    const Vec3 c = ((t.p + t.q + t.r) / 3.0 - box.min).cwiseProduct(cells);
+    keyed[i] = {morton_code(c), static_cast<std::uint32_t>(i)};
+  });
   if (config.parallel) {
-    tbb::parallel_for(std::size_t{0}, n, prepare);
+    tbb::parallel_sort(keyed.begin(), keyed.end());
   } else {
-    for (std::size_t i = 0; i < n; ++i) prepare(i);
+    std::sort(keyed.begin(), keyed.end());
   }
+  std::vector<std::uint32_t> order(n);
+  std::vector<TriInfo> info(n);
+  for_each_index([&](std::size_t i) {
+    order[i] = keyed[i].second;
+    const Triangle& t = triangles[order[i]];
+    info[i] = detail::make_tri_info(Triangle{t.p - offset, t.q - offset, t.r - offset});
+  });
+  std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(keyed);
   std::vector<std::uint32_t> ids(n);
   std::iota(ids.begin(), ids.end(), 0u);
 
-  Builder builder{config, local, info, ids, {}};
+  Builder builder{config, info, ids, {}};
   Bvh bvh;
   bvh.config = config;
   bvh.extent = box.extent();
@@ -222,13 +256,15 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     ++bvh.depth;
     bvh.nodes.resize(used);
     outcomes.assign(level.size(), Outcome{});
-    auto run = [&](std::size_t i) {
-      outcomes[i] = builder.process(level[i], bvh.nodes[static_cast<std::size_t>(level[i].node)].bv);
+    auto run = [&](const tbb::blocked_range<std::size_t>& range) {
+      Scratch& s = builder.scratch.local();
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+        outcomes[i] = builder.process(level[i], bvh.nodes[static_cast<std::size_t>(level[i].node)].bv, s);
     };
     if (config.parallel && level.size() > 1) {
-      tbb::parallel_for(std::size_t{0}, level.size(), run);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size()), run);
     } else {
-      for (std::size_t i = 0; i < level.size(); ++i) run(i);
+      run(tbb::blocked_range<std::size_t>(0, level.size()));
     }
     // Children are numbered serially, in level order: the same tree at any thread count.
     next.clear();
@@ -254,13 +290,11 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   if (bvh.nodes.capacity() > used + used / 4) bvh.nodes.shrink_to_fit();  // large leaves
 
   bvh.triangles.resize(n);
-  auto gather = [&](std::size_t i) { bvh.triangles[i] = triangles[ids[i]]; };
-  if (config.parallel) {
-    tbb::parallel_for(std::size_t{0}, n, gather);
-  } else {
-    for (std::size_t i = 0; i < n; ++i) gather(i);
-  }
-  bvh.triangle_ids = std::move(ids);
+  bvh.triangle_ids.resize(n);
+  for_each_index([&](std::size_t i) {
+    bvh.triangle_ids[i] = order[ids[i]];
+    bvh.triangles[i] = triangles[bvh.triangle_ids[i]];
+  });
   return bvh;
 }
 

@@ -11,30 +11,37 @@
 
 namespace swept::detail {
 
-/// Per-triangle data computed once per build: centroid m, area A, the vertices' scatter about
-/// their own centroid S = Σ_v (v − m)(v − m)ᵀ (so that any fitter's matrix is a sum of
-/// 3(m − c)(m − c)ᵀ and S terms: exact algebra, no cancellation), and a float bounding box used
-/// only for the degeneracy threshold.
+/// A triangle in the local frame with its area, computed once per build. The fitters derive
+/// everything else on the fly: the centroid m and the vertices' scatter about it
+/// S = Σ_v (v − m)(v − m)ᵀ (so that any fitter's matrix is a sum of 3(m − c)(m − c)ᵀ and S
+/// terms: exact algebra, no cancellation). 80 bytes, read by both the fit and the projection.
 struct TriInfo {
-  Vec3 m;
+  Triangle t;
   double area;
-  double s[6];  // xx xy xz yy yz zz
-  float lo[3];
-  float hi[3];
+
+  Vec3 centroid() const { return (t.p + t.q + t.r) / 3.0; }
 };
 
 TriInfo make_tri_info(const Triangle& local);
+
+/// Passes over a node's triangles read `info` through the node's ids: increasing, but with gaps
+/// the hardware prefetcher does not follow on large nodes, so they ask for a record this many
+/// triangles ahead.
+inline constexpr std::size_t kPrefetchAhead = 16;
+inline void prefetch(const TriInfo* record) {
+#if defined(__GNUC__)
+  __builtin_prefetch(record);
+  __builtin_prefetch(reinterpret_cast<const char*>(record) + sizeof(TriInfo) - 1);
+#else
+  (void)record;
+#endif
+}
 
 /// ε = 1e-12 · L² for a box diagonal L (SPEC §2.1: scale-aware degeneracy threshold).
 inline double epsilon_for_extent(double extent) { return 1e-12 * extent * extent; }
 
 /// Fitter over the triangles `ids` (indices into `info`).
 Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter fitter);
-
-/// RSS fit (SPEC §2.3) over the vertices of the triangles `ids` of `tris` (local frame), with
-/// frame `axes`; `scratch` is reused storage for the projected vertices.
-Rss fit_rss_ids(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
-                std::vector<Vec3>& scratch);
 
 /// An RSS in its own frame: rectangle [xlo, xhi] × [ylo, yhi] at height zc, radius r.
 struct RectExtents {
@@ -76,7 +83,7 @@ Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin);
 
 /// Projects the vertices of triangles `ids` onto `axes`, relative to `origin`: 3 per triangle;
 /// also their bounding box in that frame when `lo`/`hi` are given.
-void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
+void project_vertices(const TriInfo* info, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
                       const Vec3& origin, std::vector<Vec3>& out, Vec3* lo = nullptr, Vec3* hi = nullptr);
 
 /// The axes every fitter gives a single non-degenerate triangle (closed form, no eigen solve).

@@ -17,26 +17,7 @@
 
 namespace swept::detail {
 
-TriInfo make_tri_info(const Triangle& t) {
-  TriInfo info{};
-  info.m = (t.p + t.q + t.r) / 3.0;
-  info.area = 0.5 * (t.p - t.q).cross(t.p - t.r).norm();
-  const Vec3 a = t.p - info.m, b = t.q - info.m, c = t.r - info.m;
-  info.s[0] = a.x() * a.x() + b.x() * b.x() + c.x() * c.x();
-  info.s[1] = a.x() * a.y() + b.x() * b.y() + c.x() * c.y();
-  info.s[2] = a.x() * a.z() + b.x() * b.z() + c.x() * c.z();
-  info.s[3] = a.y() * a.y() + b.y() * b.y() + c.y() * c.y();
-  info.s[4] = a.y() * a.z() + b.y() * b.z() + c.y() * c.z();
-  info.s[5] = a.z() * a.z() + b.z() * b.z() + c.z() * c.z();
-  for (int k = 0; k < 3; ++k) {
-    const double lo = std::min({t.p[k], t.q[k], t.r[k]});
-    const double hi = std::max({t.p[k], t.q[k], t.r[k]});
-    // Round outwards so the float box contains the double one.
-    info.lo[k] = std::nextafter(static_cast<float>(lo), -std::numeric_limits<float>::infinity());
-    info.hi[k] = std::nextafter(static_cast<float>(hi), std::numeric_limits<float>::infinity());
-  }
-  return info;
-}
+TriInfo make_tri_info(const Triangle& t) { return TriInfo{t, 0.5 * (t.p - t.q).cross(t.p - t.r).norm()}; }
 
 void sorted_eigen(const Mat3& m, Mat3& axes, Vec3& values) {
   // Eigen's closed-form 3×3 solver (with its own refinement of nearly repeated roots): several
@@ -118,20 +99,9 @@ struct Sums {
   double sum_a = 0.0;
   Vec3 sum_am = Vec3::Zero();
   double max_a = 0.0;
-  float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-                 std::numeric_limits<float>::infinity()};
-  float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                 -std::numeric_limits<float>::infinity()};
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
 };
-
-double box_extent(const float lo[3], const float hi[3]) {
-  double s = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double d = static_cast<double>(hi[k]) - static_cast<double>(lo[k]);
-    if (d > 0) s += d * d;
-  }
-  return std::sqrt(s);
-}
 
 }  // namespace
 
@@ -142,17 +112,17 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
   Sums s;
   s.n = n;
   for (std::size_t j = 0; j < n; ++j) {
+    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
     const TriInfo& t = info[ids[j]];
-    s.sum_m += t.m;
+    const Vec3 m = t.centroid();
+    s.sum_m += m;
     s.sum_a += t.area;
-    s.sum_am += t.area * t.m;
+    s.sum_am += t.area * m;
     s.max_a = std::max(s.max_a, t.area);
-    for (int k = 0; k < 3; ++k) {
-      s.lo[k] = std::min(s.lo[k], t.lo[k]);
-      s.hi[k] = std::max(s.hi[k], t.hi[k]);
-    }
+    s.lo = s.lo.cwiseMin(t.t.p).cwiseMin(t.t.q).cwiseMin(t.t.r);
+    s.hi = s.hi.cwiseMax(t.t.p).cwiseMax(t.t.q).cwiseMax(t.t.r);
   }
-  const double eps = epsilon_for_extent(box_extent(s.lo, s.hi));
+  const double eps = epsilon_for_extent((s.hi - s.lo).norm());
   Fitter used = fitter;
   if (fitter != Fitter::pqp && !(s.sum_a >= eps && s.sum_a > 0.0)) {
     used = Fitter::pqp;
@@ -182,20 +152,23 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
   double acc[6] = {0, 0, 0, 0, 0, 0};
   double a_min = std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < n; ++j) {
+    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
     const TriInfo& t = info[ids[j]];
     double w = 1.0;
     if (used != Fitter::pqp) {
       w = t.area;
       if (t.area >= eps && t.area < a_min) a_min = t.area;
     }
-    const Vec3 d = t.m - c;
+    const Vec3 m = t.centroid();
+    const Vec3 d = m - c;
+    const Vec3 a = t.t.p - m, b = t.t.q - m, e = t.t.r - m;  // S from the vertices about m
     const double wc = w * k_center, ws = w * k_scatter;
-    acc[0] += wc * d.x() * d.x() + ws * t.s[0];
-    acc[1] += wc * d.x() * d.y() + ws * t.s[1];
-    acc[2] += wc * d.x() * d.z() + ws * t.s[2];
-    acc[3] += wc * d.y() * d.y() + ws * t.s[3];
-    acc[4] += wc * d.y() * d.z() + ws * t.s[4];
-    acc[5] += wc * d.z() * d.z() + ws * t.s[5];
+    acc[0] += wc * d.x() * d.x() + ws * (a.x() * a.x() + b.x() * b.x() + e.x() * e.x());
+    acc[1] += wc * d.x() * d.y() + ws * (a.x() * a.y() + b.x() * b.y() + e.x() * e.y());
+    acc[2] += wc * d.x() * d.z() + ws * (a.x() * a.z() + b.x() * b.z() + e.x() * e.z());
+    acc[3] += wc * d.y() * d.y() + ws * (a.y() * a.y() + b.y() * b.y() + e.y() * e.y());
+    acc[4] += wc * d.y() * d.z() + ws * (a.y() * a.z() + b.y() * b.z() + e.y() * e.z());
+    acc[5] += wc * d.z() * d.z() + ws * (a.z() * a.z() + b.z() * b.z() + e.z() * e.z());
   }
   if (used == Fitter::inertia) {
     if (!std::isfinite(a_min)) a_min = s.max_a;  // every triangle below ε, but their sum is not
@@ -296,13 +269,14 @@ Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
   return rss;
 }
 
-void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
+void project_vertices(const TriInfo* info, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
                       const Vec3& origin, std::vector<Vec3>& out, Vec3* lo, Vec3* hi) {
   const Mat3 at = axes.transpose();
   out.resize(3 * n);
   Vec3 box_lo = Vec3::Constant(std::numeric_limits<double>::infinity()), box_hi = -box_lo;
   for (std::size_t j = 0; j < n; ++j) {
-    const Triangle& t = tris[ids[j]];
+    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
+    const Triangle& t = info[ids[j]].t;
     for (int v = 0; v < 3; ++v) {
       const Vec3 p = at * (t[v] - origin);
       out[3 * j + v] = p;
@@ -312,15 +286,6 @@ void project_vertices(const Triangle* tris, const std::uint32_t* ids, std::size_
   }
   if (lo) *lo = box_lo;
   if (hi) *hi = box_hi;
-}
-
-Rss fit_rss_ids(const Triangle* tris, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
-                std::vector<Vec3>& scratch) {
-  if (n == 0) return Rss{axes};
-  // Projected relative to a vertex of the set, for precision.
-  const Vec3 origin = tris[ids[0]].p;
-  project_vertices(tris, ids, n, axes, origin, scratch);
-  return make_rss(rss_extents(scratch.data(), scratch.size()), axes, origin);
 }
 
 }  // namespace swept::detail
@@ -371,12 +336,19 @@ Fit fit(std::span<const Triangle> triangles, Fitter fitter) {
 }
 
 Rss fit_rss(std::span<const Triangle> triangles, const Mat3& axes) {
+  if (triangles.empty()) return Rss{axes};
   Vec3 offset;
   const std::vector<Triangle> local = localised(triangles, offset);
+  std::vector<detail::TriInfo> info;
+  info.reserve(local.size());
+  for (const Triangle& t : local) info.push_back(detail::make_tri_info(t));
   std::vector<std::uint32_t> ids(local.size());
   std::iota(ids.begin(), ids.end(), 0u);
-  std::vector<Vec3> scratch;
-  Rss rss = detail::fit_rss_ids(local.data(), ids.data(), ids.size(), axes, scratch);
+  // Projected relative to a vertex of the set, for precision.
+  const Vec3 origin = local[0].p;
+  std::vector<Vec3> projected;
+  detail::project_vertices(info.data(), ids.data(), ids.size(), axes, origin, projected);
+  Rss rss = detail::make_rss(detail::rss_extents(projected.data(), projected.size()), axes, origin);
   rss.center += offset;
   return rss;
 }
