@@ -125,10 +125,11 @@ class Checker {
     return d;
   }
 
-  /// Exact distance at `pose` when it is below `bound`; else some value ≥ `bound`.
+  /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
   double below(const Pose& pose, double bound) const {
     ++distance_queries;
-    return distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, DistanceRequest{.enough = bound}).distance;
+    const DistanceResult d = distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, DistanceRequest{.enough = bound});
+    return d.exact ? d.distance : std::numeric_limits<double>::infinity();
   }
 
   /// Exact distance at `pose` (for reporting clearance).
@@ -747,7 +748,6 @@ PlanResult Planner::run() {
                            : check_.certify(full[i], at_waypoint[i], full[i + 1], at_waypoint[i + 1]);
     if (relaxed) return;
     auto pose_at = [&](double t) { return interpolate(full[i], full[i + 1], t, c_); };
-    auto at = [&](double t) { return check_.exact(pose_at(t)); };
     int best = 0;
     seg_min[i] = at_waypoint[i];
     for (int k = 1; k < kSamples; ++k) {
@@ -755,12 +755,16 @@ PlanResult Planner::run() {
       if (d < seg_min[i]) seg_min[i] = d, best = k;
     }
     if (at_waypoint[i + 1] < seg_min[i]) seg_min[i] = at_waypoint[i + 1], best = kSamples;
+    // Golden section: each new point is compared with the interior point kept from the last
+    // step (exact), so its query may stop once it proves it is not below (+∞: the new point is
+    // dropped at the next step, and the kept interior value is always exact).
     double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
     const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = at(x1), f2 = at(x2);
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    double f1 = check_.exact(pose_at(x1)), f2 = check_.below(pose_at(x2), f1);
     for (int it = 0; it < 24; ++it) {
-      if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = at(x1);
-      else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = at(x2);
+      if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check_.below(pose_at(x1), f2);
+      else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check_.below(pose_at(x2), f1);
     }
     seg_min[i] = std::min({seg_min[i], f1, f2});
   });
