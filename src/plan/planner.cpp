@@ -11,6 +11,7 @@
 #include "swept/geometry/distance.h"
 #include "swept/query/query.h"
 
+#include <absl/container/flat_hash_map.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -24,7 +25,6 @@
 #include <numbers>
 #include <queue>
 #include <sstream>
-#include <unordered_map>
 #include <vector>
 
 namespace swept {
@@ -317,8 +317,11 @@ class Planner {
   Vec3 anchor_p_ = Vec3::Zero();
   Mat3 anchor_r_ = Mat3::Identity();
   Vec3 anchor_w_ = Vec3::Zero();  // rotation vector of the anchor relative to the problem start
-  std::unordered_map<Key, NodeInfo, KeyHash> nodes_;
-  std::unordered_map<EdgeKey, bool, EdgeHash> edges_;
+  // Open-addressing tables (abseil): millions of entries on a long search, looked up at every
+  // expansion, and let go in one piece (std::unordered_map freed them entry by entry, which
+  // took seconds past the time limit).
+  absl::flat_hash_map<Key, NodeInfo, KeyHash> nodes_;
+  absl::flat_hash_map<EdgeKey, bool, EdgeHash> edges_;
   std::size_t edges_checked_ = 0;
   int level_reached_ = 0;
   double last_progress_ = -1.0;
@@ -467,8 +470,8 @@ bool Planner::search_level(int level, std::size_t budget, std::vector<Key>& path
     }
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  std::unordered_map<Key, Key, KeyHash> closed;  // node → parent
-  std::unordered_map<Key, double, KeyHash> best_g;
+  absl::flat_hash_map<Key, Key, KeyHash> closed;  // node → parent
+  absl::flat_hash_map<Key, double, KeyHash> best_g;
   const Key start{};
   open.push({kWeight * heuristic(start_), 0.0, start, start});
   const double goal_connect = std::sqrt(static_cast<double>(dims_)) * step * 1.01;
