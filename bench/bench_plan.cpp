@@ -485,7 +485,9 @@ Row run_case(const Case& c, double limit, int seeds, int threads, bool collide_o
   // median time, and every run must give the same path.
   row.deterministic = true;
   row.main_ms = {row.swept[0].plan_ms, row.swept[1].plan_ms};
-  for (int k = 2; k < seeds; ++k) {
+  // (A run that ends on the time limit is not repeated: its median is the limit anyway.)
+  const bool repeat = row.swept[0].result.status != PlanStatus::no_path_time;
+  for (int k = 2; repeat && k < seeds; ++k) {
     const SweptRun again = run_swept(c, *main_scene, c.problem.fitter, limit, threads);
     row.main_ms.push_back(again.plan_ms);
     row.deterministic = row.deterministic && again.result.status == row.swept[0].result.status &&
