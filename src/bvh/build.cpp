@@ -170,7 +170,7 @@ struct Builder {
       return out;
     }
     // Every axis leaves a side empty (e.g. coincident centroids): split at the median of the
-    // projections on e1, ties broken by input index.
+    // projections on e1, ties broken by the builder's (Morton) order.
     const Vec3 e1 = f.axes.col(0);
     auto first = ids.begin() + node.begin, last = ids.begin() + node.end;
     const std::size_t half = n / 2;
