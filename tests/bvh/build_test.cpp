@@ -66,7 +66,9 @@ void expect_structure(const Bvh& bvh, std::size_t n, int leaf_size) {
   std::vector<std::uint32_t> ids = bvh.triangle_ids;
   std::sort(ids.begin(), ids.end());
   for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i);
-  if (leaf_size == 1) EXPECT_EQ(bvh.nodes.size(), 2 * n - 1);
+  if (leaf_size == 1) {
+    EXPECT_EQ(bvh.nodes.size(), 2 * n - 1);
+  }
 }
 
 TEST(BuildBvh, ContainmentOnSliversAndDegenerates) {

@@ -45,7 +45,9 @@ TEST(CadContainment, EveryVertexInsideLeafAndAncestors) {
                          "tessellated/as1_d0.01/as1_p10_plate.stl", "tessellated/engine_d0.05/engine_p01_CylinderHead_rle_brep.stl",
                          "nist/nist_ftc_11_asme1_rb.stp"};
   for (const char* f : files) {
-    auto model = import_mesh(*data / f, {.linear_deflection = 0.05});
+    ImportOptions options;
+    options.linear_deflection = 0.05;
+    auto model = import_mesh(*data / f, options);
     ASSERT_TRUE(model) << model.error().message;
     const auto tris = model->merged().triangles;
     for (Fitter fitter : {Fitter::pqp, Fitter::rapid2, Fitter::inertia})

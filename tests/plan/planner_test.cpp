@@ -132,7 +132,11 @@ TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
   const auto g = l_tunnel();
   const PlanScene s = scene_of(g);
   std::vector<std::uint64_t> hashes;
-  for (int threads : {1, 2, 1, 2}) hashes.push_back(plan(g.problem, s, {.threads = threads}).path_hash);
+  for (int threads : {1, 2, 1, 2}) {
+    PlanOptions options;
+    options.threads = threads;
+    hashes.push_back(plan(g.problem, s, options).path_hash);
+  }
   for (std::uint64_t h : hashes) EXPECT_EQ(h, hashes[0]);
 }
 
