@@ -216,7 +216,9 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   // lie close together in memory (on a 1.3M-triangle CAD mesh this alone makes the build about
   // a quarter faster than in the file's order). The order is a total one (ties by input index),
   // so the tree is still a function of the input alone.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+  detail::reserve_huge(keyed, n);
+  keyed.resize(n);
   const Vec3 size = box.max - box.min;
   const Vec3 cells = Vec3::NullaryExpr([&](Eigen::Index k) { return size[k] > 0.0 ? 2097151.0 / size[k] : 0.0; });
   for_each_index([&](std::size_t i) {
@@ -230,7 +232,9 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     std::sort(keyed.begin(), keyed.end());
   }
   std::vector<std::uint32_t> order(n);
-  std::vector<TriInfo> info(n);
+  std::vector<TriInfo> info;
+  detail::reserve_huge(info, n);
+  info.resize(n);
   for_each_index([&](std::size_t i) {
     order[i] = keyed[i].second;
     const Triangle& t = triangles[order[i]];
@@ -246,7 +250,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   bvh.extent = box.extent();
   // Every split leaves both sides non-empty, so there are at most n leaves and 2n − 1 nodes:
   // reserved once, so that each level's nodes are written in place, in parallel.
-  bvh.nodes.reserve(2 * n - 1);
+  detail::reserve_huge(bvh.nodes, 2 * n - 1);
   std::size_t used = 1;
 
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
@@ -289,6 +293,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   }
   if (bvh.nodes.capacity() > used + used / 4) bvh.nodes.shrink_to_fit();  // large leaves
 
+  detail::reserve_huge(bvh.triangles, n);
   bvh.triangles.resize(n);
   bvh.triangle_ids.resize(n);
   for_each_index([&](std::size_t i) {
