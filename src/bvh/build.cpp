@@ -61,17 +61,31 @@ struct Pending {
   std::uint32_t begin = 0, end = 0;
 };
 
-// What processing a node produced besides its RSS: where its triangles split (or a leaf).
+// What processing a node produced besides its RSS: where its triangles split (or a leaf), or
+// that its whole subtree is done (small nodes, see build_subtree).
 struct Outcome {
   bool leaf = true;
+  bool subtree = false;
+  int subtree_depth = 0;     // levels of the finished subtree, its root included
   std::uint32_t middle = 0;  // children: [begin, middle) and [middle, end)
 };
+
+// With one triangle per leaf, a node of n triangles has exactly 2n − 1 nodes below and
+// including it, so a small node's subtree can be given its block of indices in advance and
+// built depth first while its triangles are in cache, instead of one level per pass over all
+// triangles (the deep levels of a large mesh are mostly cache misses otherwise).
+constexpr std::uint32_t kSubtreeTriangles = 2048;
 
 struct Scratch {
   std::vector<Vec3> projected;
   std::vector<std::uint32_t> outside;  // projected vertices that may sit at an RSS corner
   std::vector<std::uint32_t> ids[2];
   std::vector<std::uint8_t> side[3];
+  struct StackItem {
+    Pending p;
+    int depth;
+  };
+  std::vector<StackItem> stack;  // build_subtree's walk
 };
 
 struct Builder {
@@ -89,6 +103,40 @@ struct Builder {
     std::copy(s.ids[0].begin(), s.ids[0].end(), ids.begin() + node.begin);
     std::copy(s.ids[1].begin(), s.ids[1].end(), ids.begin() + node.begin + s.ids[0].size());
     return node.begin + static_cast<std::uint32_t>(s.ids[0].size());
+  }
+
+  // Builds the whole subtree of `root` (leaf size 1) depth first: the root into nodes[root.node],
+  // its descendants into nodes[base, base + 2n − 2), siblings adjacent, in the order a depth-
+  // first walk (left child first) reaches them. Centres are moved to the model frame.
+  Outcome build_subtree(const Pending& root, std::size_t base, std::vector<Node>& nodes, const Vec3& offset,
+                        Scratch& s) {
+    using Item = Scratch::StackItem;
+    Outcome result;
+    result.subtree = true;
+    std::vector<Item>& stack = s.stack;
+    stack.clear();
+    stack.push_back({root, 1});
+    std::size_t next = base;
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      result.subtree_depth = std::max(result.subtree_depth, it.depth);
+      Node& node = nodes[static_cast<std::size_t>(it.p.node)];
+      const Outcome o = process(it.p, node.bv, s);
+      node.bv.center += offset;
+      if (o.leaf) {
+        node.first = static_cast<std::int32_t>(it.p.begin);
+        node.count = static_cast<std::int32_t>(it.p.end - it.p.begin);
+        continue;
+      }
+      const auto child = static_cast<std::int32_t>(next);
+      next += 2;
+      node.first = child;
+      node.count = 0;
+      stack.push_back({Pending{child + 1, o.middle, it.p.end}, it.depth + 1});
+      stack.push_back({Pending{child, it.p.begin, o.middle}, it.depth + 1});
+    }
+    return result;
   }
 
   // Fits the node's RSS (in the local frame) into `rss` and decides its split.
@@ -256,14 +304,31 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
   std::vector<Outcome> outcomes;
   std::vector<Pending> next;
+  std::vector<std::size_t> subtree_base;  // 0: not a subtree root (index 0 is the tree's root)
+  int max_depth = 0;
   while (!level.empty()) {
     ++bvh.depth;
+    // Small nodes get their subtree's block of indices now, in level order.
+    subtree_base.assign(level.size(), 0);
+    if (config.leaf_size == 1) {
+      for (std::size_t i = 0; i < level.size(); ++i) {
+        const std::uint32_t m = level[i].end - level[i].begin;
+        if (m < 2 || m > kSubtreeTriangles) continue;
+        subtree_base[i] = used;
+        used += 2 * static_cast<std::size_t>(m) - 2;
+      }
+    }
     bvh.nodes.resize(used);
     outcomes.assign(level.size(), Outcome{});
     auto run = [&](const tbb::blocked_range<std::size_t>& range) {
       Scratch& s = builder.scratch.local();
-      for (std::size_t i = range.begin(); i != range.end(); ++i)
-        outcomes[i] = builder.process(level[i], bvh.nodes[static_cast<std::size_t>(level[i].node)].bv, s);
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        if (subtree_base[i] != 0) {
+          outcomes[i] = builder.build_subtree(level[i], subtree_base[i], bvh.nodes, offset, s);
+        } else {
+          outcomes[i] = builder.process(level[i], bvh.nodes[static_cast<std::size_t>(level[i].node)].bv, s);
+        }
+      }
     };
     if (config.parallel && level.size() > 1) {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size()), run);
@@ -275,6 +340,10 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     for (std::size_t i = 0; i < level.size(); ++i) {
       const Pending& p = level[i];
       const Outcome& o = outcomes[i];
+      if (o.subtree) {
+        max_depth = std::max(max_depth, bvh.depth - 1 + o.subtree_depth);
+        continue;
+      }
       Node& node = bvh.nodes[static_cast<std::size_t>(p.node)];
       node.bv.center += offset;
       if (o.leaf) {
@@ -291,6 +360,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     }
     std::swap(level, next);
   }
+  bvh.depth = std::max(bvh.depth, max_depth);
   if (bvh.nodes.capacity() > used + used / 4) bvh.nodes.shrink_to_fit();  // large leaves
 
   detail::reserve_huge(bvh.triangles, n);

@@ -69,6 +69,23 @@ void expect_structure(const Bvh& bvh, std::size_t n, int leaf_size) {
   if (leaf_size == 1) {
     EXPECT_EQ(bvh.nodes.size(), 2 * n - 1);
   }
+  // Every node is reached exactly once from the root, and the deepest is at `depth`.
+  std::vector<int> seen(bvh.nodes.size(), 0);
+  std::vector<std::pair<std::int32_t, int>> stack{{0, 1}};
+  int deepest = 0;
+  while (!stack.empty()) {
+    const auto [i, d] = stack.back();
+    stack.pop_back();
+    ++seen[static_cast<std::size_t>(i)];
+    deepest = std::max(deepest, d);
+    const Node& node = bvh.nodes[static_cast<std::size_t>(i)];
+    if (!node.is_leaf()) {
+      stack.push_back({node.first, d + 1});
+      stack.push_back({node.first + 1, d + 1});
+    }
+  }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(seen.size()));
+  EXPECT_EQ(deepest, bvh.depth);
 }
 
 TEST(BuildBvh, ContainmentOnSliversAndDegenerates) {
