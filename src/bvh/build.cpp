@@ -88,6 +88,26 @@ struct Scratch {
   std::vector<StackItem> stack;  // build_subtree's walk
 };
 
+// Completes a processed node: its centre to the model frame, then either its leaf range or its
+// two children at indices `next`, `next + 1` (taken from `next`), returned as pending work.
+// Returns false for a leaf.
+bool link_node(Node& node, const Pending& p, const Outcome& o, const Vec3& offset, std::size_t& next,
+               Pending children[2]) {
+  node.bv.center += offset;
+  if (o.leaf) {
+    node.first = static_cast<std::int32_t>(p.begin);
+    node.count = static_cast<std::int32_t>(p.end - p.begin);
+    return false;
+  }
+  const auto child = static_cast<std::int32_t>(next);
+  next += 2;
+  node.first = child;
+  node.count = 0;
+  children[0] = {child, p.begin, o.middle};
+  children[1] = {child + 1, o.middle, p.end};
+  return true;
+}
+
 struct Builder {
   const BuildConfig& config;
   const std::vector<TriInfo>& info;  // local frame
@@ -122,19 +142,10 @@ struct Builder {
       stack.pop_back();
       result.subtree_depth = std::max(result.subtree_depth, it.depth);
       Node& node = nodes[static_cast<std::size_t>(it.p.node)];
-      const Outcome o = process(it.p, node.bv, s);
-      node.bv.center += offset;
-      if (o.leaf) {
-        node.first = static_cast<std::int32_t>(it.p.begin);
-        node.count = static_cast<std::int32_t>(it.p.end - it.p.begin);
-        continue;
-      }
-      const auto child = static_cast<std::int32_t>(next);
-      next += 2;
-      node.first = child;
-      node.count = 0;
-      stack.push_back({Pending{child + 1, o.middle, it.p.end}, it.depth + 1});
-      stack.push_back({Pending{child, it.p.begin, o.middle}, it.depth + 1});
+      Pending children[2];
+      if (!link_node(node, it.p, process(it.p, node.bv, s), offset, next, children)) continue;
+      stack.push_back({children[1], it.depth + 1});
+      stack.push_back({children[0], it.depth + 1});  // the left child first
     }
     return result;
   }
@@ -344,19 +355,9 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
         max_depth = std::max(max_depth, bvh.depth - 1 + o.subtree_depth);
         continue;
       }
-      Node& node = bvh.nodes[static_cast<std::size_t>(p.node)];
-      node.bv.center += offset;
-      if (o.leaf) {
-        node.first = static_cast<std::int32_t>(p.begin);
-        node.count = static_cast<std::int32_t>(p.end - p.begin);
-        continue;
-      }
-      const auto child = static_cast<std::int32_t>(used);
-      used += 2;
-      node.first = child;
-      node.count = 0;
-      next.push_back({child, p.begin, o.middle});
-      next.push_back({child + 1, o.middle, p.end});
+      Pending children[2];
+      if (link_node(bvh.nodes[static_cast<std::size_t>(p.node)], p, o, offset, used, children))
+        next.insert(next.end(), children, children + 2);
     }
     std::swap(level, next);
   }
