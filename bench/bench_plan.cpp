@@ -390,6 +390,14 @@ OmplRun run_ompl(const Case& c, const Geometry& g, const PlanScene& scene, const
 
 // ---- one problem ------------------------------------------------------------------------------
 
+/// Median of a sample (the mean of the middle two for an even count); 0 for none.
+double median(std::vector<double> t) {
+  if (t.empty()) return 0.0;
+  std::sort(t.begin(), t.end());
+  const std::size_t n = t.size();
+  return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
 struct Row {
   std::string name, kind;
   std::size_t body_triangles = 0, obstacle_triangles = 0;
@@ -406,13 +414,7 @@ struct Row {
   /// each time, so repeats measure the timing spread only).
   std::vector<double> main_ms;
   /// Median over the runs of the problem's fitter: compared with OMPL's median over seeds.
-  double swept_median() const {
-    std::vector<double> t = main_ms;
-    std::sort(t.begin(), t.end());
-    if (t.empty()) return main().plan_ms;
-    const std::size_t n = t.size();
-    return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
-  }
+  double swept_median() const { return main_ms.empty() ? main().plan_ms : median(main_ms); }
   int ompl_colliding() const {
     return static_cast<int>(std::count_if(ompl.begin(), ompl.end(), [](const OmplRun& r) { return r.verified == "collides"; }));
   }
@@ -423,10 +425,7 @@ struct Row {
   double ompl_median() const {
     std::vector<double> t;
     for (const auto& r : ompl) t.push_back(r.ms);
-    std::sort(t.begin(), t.end());
-    if (t.empty()) return 0.0;
-    const std::size_t n = t.size();
-    return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+    return median(std::move(t));
   }
   double ompl_min() const {
     double m = std::numeric_limits<double>::infinity();
@@ -483,18 +482,16 @@ Row run_case(const Case& c, double limit, int seeds, int threads, bool collide_o
   }
   // More runs of the problem's fitter, as many in all as OMPL gets seeds (at least two): the
   // median time, and every run must give the same path.
-  row.deterministic = true;
+  const PlanResult& first = row.swept[0].result;
+  auto same = [&](const PlanResult& r) { return r.status == first.status && r.path_hash == first.path_hash; };
+  row.deterministic = same(row.swept[1].result);
   row.main_ms = {row.swept[0].plan_ms, row.swept[1].plan_ms};
   // (A run that ends on the time limit is not repeated: its median is the limit anyway.)
-  const bool repeat = row.swept[0].result.status != PlanStatus::no_path_time;
-  for (int k = 2; repeat && k < seeds; ++k) {
+  for (int k = 2; first.status != PlanStatus::no_path_time && k < seeds; ++k) {
     const SweptRun again = run_swept(c, *main_scene, c.problem.fitter, limit, threads);
     row.main_ms.push_back(again.plan_ms);
-    row.deterministic = row.deterministic && again.result.status == row.swept[0].result.status &&
-                        again.result.path_hash == row.swept[0].result.path_hash;
+    row.deterministic = row.deterministic && same(again.result);
   }
-  row.deterministic = row.deterministic && row.swept[0].result.status == row.swept[1].result.status &&
-                      row.swept[0].result.path_hash == row.swept[1].result.path_hash;
   row.body_triangles = main_scene->body.triangles.size();
   row.obstacle_triangles = main_scene->obstacles.triangles.size();
 
