@@ -1,6 +1,6 @@
-// OBJ, PLY, OFF, glTF/GLB and COLLADA through assimp. Post-processing is limited to
-// triangulating polygons so the soup stays as the file has it (no degenerate removal, no vertex
-// merging). OBJ, OFF and PLY files are checked first (line by line where they are text), because
+// OBJ, PLY, OFF, glTF/GLB and COLLADA through assimp. Post-processing is limited to validating
+// the scene and triangulating polygons so the soup stays as the file has it (no degenerate
+// removal, no vertex merging). OBJ, OFF and PLY files are checked first (line by line where they are text), because
 // assimp parses malformed or non-finite numbers without complaint, cannot say on which line they
 // were, and hangs on some truncated PLY files.
 #include "import_detail.h"
@@ -174,12 +174,41 @@ struct PlyProperty {
   std::string name;
   int size = 0;       // scalar size in bytes, or the list's item size
   int count_size = 0; // > 0 for a list: size of its count
+  bool is_signed = false;  // the (list item) type is signed
+  bool is_float = false;   // the (list item) type is float or double
+  bool vertex_refs = false;  // a list of vertex indices (face/tristrips "vertex_indices"/"vertex_index")
 };
 struct PlyElement {
   std::string name;
   long long count = 0;
   std::vector<PlyProperty> properties;
 };
+
+bool ply_type_signed(std::string_view t) {
+  return t == "char" || t == "short" || t == "int" || t == "int8" || t == "int16" || t == "int32";
+}
+
+bool ply_type_float(std::string_view t) { return t == "float" || t == "double" || t == "float32" || t == "float64"; }
+
+// Reads one binary PLY scalar of `size` bytes as an integer (for list counts and vertex indices).
+long long ply_binary_int(const char* p, int size, bool is_signed, bool little) {
+  unsigned long long n = 0;
+  for (int b = 0; b < size; ++b) {
+    const auto byte = static_cast<unsigned char>(p[b]);
+    n |= static_cast<unsigned long long>(byte) << (8 * (little ? b : size - 1 - b));
+  }
+  if (is_signed && size < 8 && (n >> (8 * size - 1)) != 0) n |= ~0ull << (8 * size);  // sign-extend
+  return static_cast<long long>(n);
+}
+
+// A face's vertex reference must name one of the `vertices` vertices; tristrips use -1 as a
+// strip separator (assimp's PLY reader does). "" when fine, else the reason.
+std::string check_vertex_ref(long long index, long long vertices, const PlyElement& e, long long item) {
+  if (index == -1 && e.name == "tristrips") return {};
+  if (index >= 0 && index < vertices) return {};
+  return "element '" + e.name + "' " + std::to_string(item) + " refers to vertex " + std::to_string(index) +
+         " but the file has " + std::to_string(vertices) + " vertices (0 to " + std::to_string(vertices - 1) + ")";
+}
 
 int ply_type_size(std::string_view t) {
   if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
@@ -224,8 +253,12 @@ std::string check_ply(const std::string& bytes) {
       if (tok.size() >= 5 && tok[1] == "list") {
         p.count_size = ply_type_size(tok[2]);
         p.size = ply_type_size(tok[3]);
+        p.is_signed = ply_type_signed(tok[3]);
+        p.is_float = ply_type_float(tok[3]);
         p.name = std::string(tok[4]);
         if (p.count_size == 0 || p.size == 0) return at + "unknown list type";
+        p.vertex_refs = (elements.back().name == "face" || elements.back().name == "tristrips") &&
+                        (p.name == "vertex_indices" || p.name == "vertex_index");
       } else if (tok.size() >= 3) {
         p.size = ply_type_size(tok[1]);
         p.name = std::string(tok[2]);
@@ -241,6 +274,9 @@ std::string check_ply(const std::string& bytes) {
     }
   }
   if (format.empty()) return "the header has no 'format' line";
+  long long vertices = 0;  // count of the 'vertex' element, which face indices refer to
+  for (const PlyElement& e : elements)
+    if (e.name == "vertex") vertices = e.count;
 
   if (format == "ascii") {
     for (const PlyElement& e : elements) {
@@ -263,8 +299,15 @@ std::string check_ply(const std::string& bytes) {
           if (p.count_size > 0) {
             long long n = 0;
             if (!parse_int(tok[k], n) || n < 0) return at + "malformed list count " + quoted(tok[k]);
+            if (static_cast<unsigned long long>(n) > tok.size() - k - 1)
+              return at + "list '" + p.name + "' has fewer than its " + std::to_string(n) + " values";
+            for (std::size_t j = k + 1; j <= k + static_cast<std::size_t>(n); ++j) {
+              if (!p.vertex_refs) continue;
+              long long index = 0;
+              if (!parse_int(tok[j], index)) return at + "malformed vertex index " + quoted(tok[j]);
+              if (std::string err = check_vertex_ref(index, vertices, e, i); !err.empty()) return at + err;
+            }
             k += 1 + static_cast<std::size_t>(n);
-            if (k > tok.size()) return at + "list '" + p.name + "' has fewer than its " + std::to_string(n) + " values";
           } else {
             double x = 0.0;
             if (std::string err = parse_number(tok[k], x); !err.empty())
@@ -286,15 +329,21 @@ std::string check_ply(const std::string& bytes) {
           return "truncated binary PLY: element '" + e.name + "' " + std::to_string(i) + " of " +
                  std::to_string(e.count) + " ends past the end of the file";
         if (p.count_size > 0) {
-          unsigned long long n = 0;
-          for (int b = 0; b < p.count_size; ++b) {
-            const auto byte = static_cast<unsigned char>(bytes[pos + static_cast<std::size_t>(b)]);
-            n |= static_cast<unsigned long long>(byte) << (8 * (little ? b : p.count_size - 1 - b));
-          }
+          const auto n = static_cast<unsigned long long>(ply_binary_int(bytes.data() + pos, p.count_size, false, little));
+          if (n > bytes.size())  // also keeps n * size below overflow
+            return "truncated binary PLY: element '" + e.name + "' " + std::to_string(i) + " of " +
+                   std::to_string(e.count) + " ends past the end of the file";
           need += static_cast<std::size_t>(n) * static_cast<std::size_t>(p.size);
           if (pos + need > bytes.size())
             return "truncated binary PLY: element '" + e.name + "' " + std::to_string(i) + " of " +
                    std::to_string(e.count) + " ends past the end of the file";
+          if (p.vertex_refs && !p.is_float) {
+            for (unsigned long long j = 0; j < n; ++j) {
+              const char* item = bytes.data() + pos + static_cast<std::size_t>(p.count_size) + j * static_cast<std::size_t>(p.size);
+              const long long index = ply_binary_int(item, p.size, p.is_signed, little);
+              if (std::string err = check_vertex_ref(index, vertices, e, i); !err.empty()) return err;
+            }
+          }
         }
         pos += need;
       }
@@ -318,10 +367,16 @@ Affine compose(const Affine& parent, const Affine& child) {
   return out;
 }
 
-void collect(const aiScene& scene, const aiNode& node, const Affine& parent, double scale, const std::string& stem,
-             std::vector<TriangleSoup>& parts) {
+// Appends the triangles of `node` and its children, in the file's frame scaled to the output
+// unit. "" on success, else the reason: every face index is checked against the mesh's vertex
+// count here too (not only by ValidateDataStructure), since reading past mVertices is a crash.
+std::string collect(const aiScene& scene, const aiNode& node, const Affine& parent, double scale,
+                    const std::string& stem, std::vector<TriangleSoup>& parts) {
   const Affine world = compose(parent, to_affine(node.mTransformation));
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+    if (node.mMeshes[m] >= scene.mNumMeshes)
+      return "node '" + std::string(node.mName.C_Str()) + "' refers to mesh " + std::to_string(node.mMeshes[m]) +
+             " of " + std::to_string(scene.mNumMeshes);
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
     TriangleSoup soup;
     soup.name = mesh.mName.length > 0 ? std::string(mesh.mName.C_Str())
@@ -333,7 +388,11 @@ void collect(const aiScene& scene, const aiNode& node, const Affine& parent, dou
       if (face.mNumIndices != 3) continue;  // points and lines are not surface
       Triangle t;
       for (int v = 0; v < 3; ++v) {
-        const aiVector3D& a = mesh.mVertices[face.mIndices[v]];
+        const unsigned index = face.mIndices[v];
+        if (index >= mesh.mNumVertices || mesh.mVertices == nullptr)
+          return "mesh '" + soup.name + "' face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
+                 " but the mesh has " + std::to_string(mesh.mNumVertices) + " vertices";
+        const aiVector3D& a = mesh.mVertices[index];
         const Vec3 p(a.x, a.y, a.z);
         t[v] = scale * (world.leftCols<3>() * p + world.col(3));
       }
@@ -341,7 +400,9 @@ void collect(const aiScene& scene, const aiNode& node, const Affine& parent, dou
     }
     parts.push_back(std::move(soup));
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) collect(scene, *node.mChildren[c], world, scale, stem, parts);
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    if (std::string err = collect(scene, *node.mChildren[c], world, scale, stem, parts); !err.empty()) return err;
+  return {};
 }
 
 }  // namespace
@@ -359,11 +420,15 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
     Assimp::Importer importer;
     // Keep COLLADA coordinates as authored (assimp would rotate Z-up files to Y-up).
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-    const aiScene* scene = importer.ReadFile(ctx.file.string(), aiProcess_Triangulate);
+    // ValidateDataStructure rejects face indices past the vertex list (and other broken scenes)
+    // before any other step reads them.
+    const aiScene* scene = importer.ReadFile(ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate);
     if (scene == nullptr) return file_error(ctx.display, std::string("assimp: ") + importer.GetErrorString());
     if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
     const std::string stem = ctx.file.stem().string();
-    collect(*scene, *scene->mRootNode, Affine::Identity(), ctx.file_to_output, stem, parts);
+    if (std::string err = collect(*scene, *scene->mRootNode, Affine::Identity(), ctx.file_to_output, stem, parts);
+        !err.empty())
+      return file_error(ctx.display, err);
   } catch (const std::exception& e) {
     return file_error(ctx.display, std::string("assimp: ") + e.what());
   }

@@ -278,6 +278,68 @@ TEST(ImportPly, TruncatedAndMalformedPlyAreErrors) {
   expect_error(import_mesh(short_bin), {short_bin.string(), "truncated binary PLY", "'face' 1 of 2"});
 }
 
+// A face index past the vertex list was read from outside assimp's vertex buffer (a crash for
+// a huge index, a garbage triangle for a small one): now an error naming the line and index.
+TEST(ImportPly, FaceIndexPastTheVertexListIsAnError) {
+  const auto dir = scratch_dir();
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n4 0 0\n4 2 0\n0 2 1\n3 0 1 2\n";
+  const auto small = write_file(dir / "small.ply", header + "3 0 2 4\n");
+  expect_error(import_mesh(small), {small.string(), "line 15", "'face' 1 refers to vertex 4", "4 vertices"});
+  const auto huge = write_file(dir / "huge.ply", header + "3 0 2 2000000000\n");
+  expect_error(import_mesh(huge), {huge.string(), "line 15", "refers to vertex 2000000000"});
+  const auto negative = write_file(dir / "negative.ply", header + "3 -1 2 3\n");
+  expect_error(import_mesh(negative), {negative.string(), "line 15", "refers to vertex -1"});
+  const auto good = import_mesh(write_file(dir / "good.ply", header + "3 0 2 3\n"));
+  ASSERT_TRUE(good.ok()) << good.error().message;
+  EXPECT_EQ(good->triangle_count(), 2u);
+
+  // Binary, unsigned 32-bit indices: 7 and 0xFFFFFFF0 in the second face.
+  std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 2\nproperty list uchar uint vertex_indices\nend_header\n";
+  const float v[12] = {0, 0, 0, 4, 0, 0, 4, 2, 0, 0, 2, 1};
+  bin.append(reinterpret_cast<const char*>(v), sizeof v);
+  auto faces = [&](std::uint32_t last) {
+    std::string out = bin;
+    for (const std::uint32_t f : {0u, 1u, 2u, 0u, 2u, last}) {
+      if (f == 0) out.push_back('\x03');
+      out.append(reinterpret_cast<const char*>(&f), 4);
+    }
+    return out;
+  };
+  const auto bin_small = write_file(dir / "bin_small.ply", faces(7));
+  expect_error(import_mesh(bin_small), {bin_small.string(), "'face' 1 refers to vertex 7"});
+  const auto bin_huge = write_file(dir / "bin_huge.ply", faces(0xFFFFFFF0u));
+  expect_error(import_mesh(bin_huge), {bin_huge.string(), "refers to vertex 4294967280"});
+  const auto bin_good = import_mesh(write_file(dir / "bin_good.ply", faces(3)));
+  ASSERT_TRUE(bin_good.ok()) << bin_good.error().message;
+  EXPECT_EQ(bin_good->triangle_count(), 2u);
+}
+
+TEST(ImportObj, FaceIndexPastTheVertexListIsAnError) {
+  const auto dir = scratch_dir();
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const auto small = write_file(dir / "small.obj", verts + "f 1 2 4\n");
+  expect_error(import_mesh(small), {small.string(), "line 4", "vertex 4 but 3 vertices"});
+  const auto huge = write_file(dir / "huge.obj", verts + "f 1 2 4294967297\n");
+  expect_error(import_mesh(huge), {huge.string(), "line 4", "vertex 4294967297"});
+  const auto relative = write_file(dir / "relative.obj", verts + "f -1 -2 -4\n");
+  expect_error(import_mesh(relative), {relative.string(), "line 4", "vertex -4"});
+}
+
+TEST(ImportOff, FaceIndexPastTheVertexListIsAnError) {
+  const auto dir = scratch_dir();
+  const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  const auto small = write_file(dir / "small.off", head + "3 0 1 3\n");
+  expect_error(import_mesh(small), {small.string(), "line 6", "face 0 refers to vertex 3 of 3"});
+  const auto huge = write_file(dir / "huge.off", head + "3 0 1 4294967296\n");
+  expect_error(import_mesh(huge), {huge.string(), "line 6", "vertex 4294967296"});
+  const auto good = import_mesh(write_file(dir / "good.off", head + "3 0 1 2\n"));
+  ASSERT_TRUE(good.ok()) << good.error().message;
+}
+
 TEST(ImportOff, TetrahedronAndErrors) {
   const auto dir = scratch_dir();
   const std::string text = "OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";

@@ -53,15 +53,16 @@ struct ImportedModel {
 
 /// Reads a mesh or CAD file; the format is chosen from the extension (case-insensitive):
 /// .stl → swept's own reader (ASCII and binary, double precision, exact line/triangle errors);
-/// .obj .ply .off .gltf .glb .dae → assimp (only aiProcess_Triangulate: degenerate triangles and
-/// duplicate vertices are kept); .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly
+/// .obj .ply .off .gltf .glb .dae → assimp (aiProcess_ValidateDataStructure and aiProcess_Triangulate
+/// only: degenerate triangles and duplicate vertices are kept); .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly
 /// placements and names; BRepMesh in parallel, deterministic). Part names: STL solid names,
 /// assimp mesh/node names, STEP/IGES product names, "<stem>_solid<k>" for .brep solids;
 /// repeated names get "#2", "#3", ... in file order. Parts without triangles are dropped.
 ///
 /// Errors (never exceptions), each starting with the file as given: unknown output/file unit
 /// (with the accepted list), unknown extension, missing file, empty file, truncated binary STL
-/// ("header says N triangles, file holds M"), malformed ASCII STL/OBJ/OFF ("line L: ..."),
+/// ("header says N triangles, file holds M"), malformed ASCII STL/OBJ/OFF/PLY ("line L: ..."), a face
+/// index past the vertex list (OBJ, OFF, PLY with the line; any assimp format with the mesh and face),
 /// non-finite coordinates ("triangle I has a non-finite coordinate", I 0-based within its part,
 /// or the line for ASCII formats), unreadable STEP/IGES (with the failing entities), a file
 /// without triangles, non-positive deflections for CAD formats.
