@@ -53,11 +53,21 @@ Result<bool> read_binary(const ReadContext& ctx, const std::string& bytes, std::
   if (bytes.size() < 84)
     return file_error(ctx.display, "truncated binary STL: " + std::to_string(bytes.size()) +
                                        " bytes, shorter than the 84-byte header");
+  // The size must be exactly 84 + 50 * count: a shorter file is truncated, and records past the
+  // count (or a partial record) mean the header lies, so which triangles are meant is unknown.
   const std::uint64_t count = get_u32(bytes.data() + 80);
+  const std::uint64_t expected = 84 + 50 * count;
   const std::uint64_t holds = (bytes.size() - 84) / 50;
+  const std::uint64_t rest = (bytes.size() - 84) % 50;
+  const std::string sizes = " (" + std::to_string(bytes.size()) + " bytes; " + std::to_string(count) +
+                            " triangles take 84 + 50 * " + std::to_string(count) + " = " + std::to_string(expected) + ")";
   if (holds < count)
     return file_error(ctx.display, "truncated binary STL: header says " + std::to_string(count) +
-                                       " triangles, file holds " + std::to_string(holds));
+                                       " triangles, file holds " + std::to_string(holds) + sizes);
+  if (bytes.size() != expected)
+    return file_error(ctx.display, "binary STL size does not match its header: header says " + std::to_string(count) +
+                                       " triangles, file holds " + std::to_string(holds) +
+                                       (rest ? " and " + std::to_string(rest) + " more bytes" : std::string()) + sizes);
   TriangleSoup soup;
   soup.name = ctx.file.stem().string();
   soup.triangles.resize(count);

@@ -118,6 +118,29 @@ TEST(ImportStl, TruncatedBinaryIsReported) {
   expect_error(import_mesh(tiny), {tiny.string(), "truncated binary STL"});
 }
 
+// A header count smaller than the records used to drop the rest silently.
+TEST(ImportStl, BinarySizeMustMatchTheHeaderCount) {
+  const auto dir = scratch_dir();
+  TriangleSoup box{"box", box_triangles(Vec3(0, 0, 0), Vec3(1, 1, 1))};
+  ASSERT_TRUE(write_stl_binary(dir / "full.stl", box).ok());
+  const std::string bytes = read_bytes(dir / "full.stl");
+  ASSERT_EQ(bytes.size(), 84u + 50u * 12u);
+
+  std::string fewer = bytes;
+  const std::uint32_t ten = 10;
+  std::memcpy(fewer.data() + 80, &ten, 4);
+  const auto file = write_file(dir / "fewer.stl", fewer);
+  expect_error(import_mesh(file), {file.string(), "header says 10 triangles, file holds 12", "684 bytes", "= 584"});
+
+  const auto extra = write_file(dir / "extra.stl", bytes + std::string(7, '\0'));
+  expect_error(import_mesh(extra), {extra.string(), "header says 12 triangles, file holds 12 and 7 more bytes"});
+
+  std::string zero = bytes;
+  std::memset(zero.data() + 80, 0, 4);
+  const auto none = write_file(dir / "zero.stl", zero);
+  expect_error(import_mesh(none), {none.string(), "header says 0 triangles, file holds 12"});
+}
+
 TEST(ImportStl, NonFiniteBinaryCoordinateNamesTheTriangle) {
   const auto dir = scratch_dir();
   TriangleSoup box{"box", box_triangles(Vec3(0, 0, 0), Vec3(1, 1, 1))};

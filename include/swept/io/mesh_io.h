@@ -60,8 +60,8 @@ struct ImportedModel {
 /// repeated names get "#2", "#3", ... in file order. Parts without triangles are dropped.
 ///
 /// Errors (never exceptions), each starting with the file as given: unknown output/file unit
-/// (with the accepted list), unknown extension, missing file, empty file, truncated binary STL
-/// ("header says N triangles, file holds M"), malformed ASCII STL/OBJ/OFF/PLY ("line L: ..."), a face
+/// (with the accepted list), unknown extension, missing file, empty file, a binary STL whose size is
+/// not exactly 84 + 50 · count ("header says N triangles, file holds M", truncated or with extra records), malformed ASCII STL/OBJ/OFF/PLY ("line L: ..."), a face
 /// index past the vertex list (OBJ, OFF, PLY with the line; any assimp format with the mesh and face),
 /// non-finite coordinates ("triangle I has a non-finite coordinate", I 0-based within its part,
 /// or the line for ASCII formats), unreadable STEP/IGES (with the failing entities), a file
