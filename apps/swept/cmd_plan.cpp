@@ -75,6 +75,11 @@ void run(const PlanCliOptions& o) {
         {"translation_length", r.translation_length},
         {"rotation_length_rad", r.rotation_length},
         {"min_clearance", r.solved() ? nlohmann::json(r.min_clearance) : nlohmann::json(nullptr)},
+        {"escape", r.solved() && r.escape_segments > 0
+                       ? nlohmann::json{{"segments", r.escape_segments},
+                                        {"exempt_pairs", r.exempt_pairs},
+                                        {"min_clearance_other_pairs", r.escape_clearance}}
+                       : nlohmann::json(nullptr)},
         {"time_ms", {{"build", r.time_ms.build}, {"search", r.time_ms.search}, {"smooth", r.time_ms.smooth}, {"total", r.time_ms.total}}},
         {"queries", {{"distance", r.queries.distance}, {"tolerance", r.queries.tolerance}, {"collide", r.queries.collide}}},
         {"path_hash", hex(r.path_hash)},
@@ -93,8 +98,12 @@ void run(const PlanCliOptions& o) {
                 << r.path_length << " " << problem->unit << " (translation " << r.translation_length << " "
                 << problem->unit << ", rotation " << r.rotation_length * 180.0 / 3.14159265358979323846 << " deg)\n"
                 << "clearance    min " << r.min_clearance << " " << problem->unit << " (required " << problem->clearance
-                << ")\n"
-                << "path hash    " << hex(r.path_hash) << "\n";
+                << (r.escape_segments > 0 ? "; the start is in contact" : "") << ")\n";
+      if (r.escape_segments > 0)
+        std::cout << "escape       first segment: " << r.exempt_pairs
+                  << " triangle pairs in contact at the start exempt, every other pair min " << r.escape_clearance
+                  << " " << problem->unit << "\n";
+      std::cout << "path hash    " << hex(r.path_hash) << "\n";
       if (!o.output.empty()) std::cout << "written      " << o.output << "\n";
     }
     std::cout << std::setprecision(4) << "time         build " << r.time_ms.build << " ms, search " << r.time_ms.search

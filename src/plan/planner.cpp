@@ -38,102 +38,37 @@ Mat3 exp_rotation(const Vec3& w) {
   return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
 }
 
-// The RSS of a body node placed in the world.
-Rss placed(const Rss& v, const Pose& pose) {
-  Rss out = v;
-  out.axes = pose.rotation * v.axes;
-  out.center = pose.apply(v.center);
-  return out;
-}
-
-// Body and obstacle triangles closer than `threshold` to the other side at `pose` (dual
-// traversal of the two trees with RSS lower bounds, then exact triangle distances).
-void contact_sets(const PlanScene& s, const Pose& pose, double threshold, std::vector<char>& body_in,
-                  std::vector<char>& obstacle_in) {
-  body_in.assign(s.body.triangles.size(), 0);
-  obstacle_in.assign(s.obstacles.triangles.size(), 0);
-  const Bvh& a = s.obstacle_tree;
-  const Bvh& b = s.body_tree;
-  std::vector<std::pair<int, int>> stack{{0, 0}};
-  while (!stack.empty()) {
-    auto [i, j] = stack.back();
-    stack.pop_back();
-    const Node& na = a.nodes[static_cast<std::size_t>(i)];
-    const Node& nb = b.nodes[static_cast<std::size_t>(j)];
-    if (rss_distance(na.bv, placed(nb.bv, pose)) >= threshold) continue;
-    if (na.is_leaf() && nb.is_leaf()) {
-      for (int ta = na.first; ta < na.first + na.count; ++ta)
-        for (int tb = nb.first; tb < nb.first + nb.count; ++tb) {
-          const Triangle& tt = b.triangles[static_cast<std::size_t>(tb)];
-          const Triangle world{pose.apply(tt.p), pose.apply(tt.q), pose.apply(tt.r)};
-          if (triangle_distance(a.triangles[static_cast<std::size_t>(ta)], world).distance < threshold) {
-            obstacle_in[a.triangle_ids[static_cast<std::size_t>(ta)]] = 1;
-            body_in[b.triangle_ids[static_cast<std::size_t>(tb)]] = 1;
-          }
-        }
-      continue;
-    }
-    const bool split_a = !na.is_leaf() && (nb.is_leaf() || surface_area(na.bv) >= surface_area(nb.bv));
-    if (split_a) {
-      stack.push_back({na.first + 1, j});
-      stack.push_back({na.first, j});
-    } else {
-      stack.push_back({i, nb.first + 1});
-      stack.push_back({i, nb.first});
-    }
-  }
-}
-
 // Distance bounds and motion certificates against the obstacles, with query counters. In
-// `relaxed` mode (the escape from a start in contact) the pairs of triangles that were in
-// contact at the start are exempt: every other pair is checked.
+// `relaxed` mode (the escape from a start in contact) the triangle pairs that were closer than
+// clearance + contact tolerance at the start are left out, pair by pair; every other pair of
+// triangles is checked.
 class Checker {
  public:
   Checker(const PlanScene& scene, double margin) : s_(scene), margin_(margin) {}
 
-  void set_contact_model(const std::vector<char>& body_in, const std::vector<char>& obstacle_in) {
-    auto reduced = [](const std::vector<Triangle>& all, const std::vector<char>& drop) {
-      std::vector<Triangle> keep;
-      for (std::size_t i = 0; i < all.size(); ++i)
-        if (!drop[i]) keep.push_back(all[i]);
-      return keep;
-    };
-    const auto rb = reduced(s_.body.triangles, body_in);
-    const auto ro = reduced(s_.obstacles.triangles, obstacle_in);
-    const BuildConfig config = s_.body_tree.config;
-    if (!rb.empty()) reduced_body_ = std::make_unique<Bvh>(std::move(*build_bvh(rb, config)));
-    if (!ro.empty()) reduced_obstacles_ = std::make_unique<Bvh>(std::move(*build_bvh(ro, config)));
-    relaxed_ready_ = true;
-  }
+  /// The pairs (obstacle triangle, body triangle) that relaxed queries leave out.
+  void set_exempt(TrianglePairs pairs) { exempt_ = std::move(pairs); }
+  const TrianglePairs& exempt() const { return exempt_; }
 
   /// A lower bound on the distance at `pose`, exact below `enough`.
   double clearance(const Pose& pose, double enough, bool relaxed = false) const {
-    const DistanceRequest req{.enough = enough};
-    if (!relaxed) {
-      ++distance_queries;
-      return distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, req).distance;
-    }
-    double d = std::numeric_limits<double>::infinity();
-    if (reduced_body_) {
-      ++distance_queries;
-      d = std::min(d, distance(s_.obstacle_tree, Pose{}, *reduced_body_, pose, req).distance);
-    }
-    if (reduced_obstacles_) {
-      ++distance_queries;
-      d = std::min(d, distance(*reduced_obstacles_, Pose{}, s_.body_tree, pose, req).distance);
-    }
-    return d;
+    ++distance_queries;
+    const DistanceRequest req{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr};
+    return distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, req).distance;
   }
 
   /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
-  double below(const Pose& pose, double bound) const {
+  double below(const Pose& pose, double bound, bool relaxed = false) const {
     ++distance_queries;
-    const DistanceResult d = distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, DistanceRequest{.enough = bound});
+    const DistanceRequest req{.enough = bound, .exclude = relaxed ? &exempt_ : nullptr};
+    const DistanceResult d = distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, req);
     return d.exact ? d.distance : std::numeric_limits<double>::infinity();
   }
 
   /// Exact distance at `pose` (for reporting clearance).
-  double exact(const Pose& pose) const { return below(pose, std::numeric_limits<double>::infinity()); }
+  double exact(const Pose& pose, bool relaxed = false) const {
+    return below(pose, std::numeric_limits<double>::infinity(), relaxed);
+  }
 
   double length(const Pose& a, const Pose& b) const {
     return motion_length(a, b, s_.reference, s_.radius);
@@ -174,7 +109,6 @@ class Checker {
   }
 
   double margin() const { return margin_; }
-  bool relaxed_ready() const { return relaxed_ready_; }
   /// While set, certificates that run past this time give up (not free).
   void set_deadline(std::optional<Clock::time_point> t) { deadline_ = t; }
 
@@ -184,8 +118,7 @@ class Checker {
  private:
   const PlanScene& s_;
   double margin_;
-  std::unique_ptr<Bvh> reduced_body_, reduced_obstacles_;
-  bool relaxed_ready_ = false;
+  TrianglePairs exempt_;
   std::optional<Clock::time_point> deadline_;
 };
 
@@ -287,6 +220,13 @@ class Planner {
     return n;
   }
 
+  // The smallest exact distance along a segment (pose_at(t), t in [0, 1]) with exact end values
+  // `d0`, `d1`: 15 samples in between, then a golden-section search around the smallest. A
+  // sample only matters when it is below the smallest so far, so its query stops as soon as it
+  // proves it is not. `relaxed`: with the exempt pairs left out.
+  template <class PoseAt>
+  double sampled_minimum(const PoseAt& pose_at, double d0, double d1, bool relaxed) const;
+
   bool straight_line_phase(std::vector<Pose>& out);
   bool grid_phase(std::vector<Pose>& out, PlanStatus& why);
   bool search_level(int level, std::size_t budget, std::vector<Key>& path, bool& exhausted);
@@ -324,6 +264,30 @@ class Planner {
   double last_progress_ = -1.0;
 };
 
+template <class PoseAt>
+double Planner::sampled_minimum(const PoseAt& pose_at, double d0, double d1, bool relaxed) const {
+  constexpr int kSamples = 16;
+  int best = 0;
+  double lowest = d0;
+  for (int k = 1; k < kSamples; ++k) {
+    const double d = check_.below(pose_at(static_cast<double>(k) / kSamples), lowest, relaxed);
+    if (d < lowest) lowest = d, best = k;
+  }
+  if (d1 < lowest) lowest = d1, best = kSamples;
+  // Golden section: each new point is compared with the interior point kept from the last step
+  // (exact), so its query may stop once it proves it is not below (+∞: the new point is dropped
+  // at the next step, and the kept interior value is always exact).
+  double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = check_.exact(pose_at(x1), relaxed), f2 = check_.below(pose_at(x2), f1, relaxed);
+  for (int it = 0; it < 24; ++it) {
+    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check_.below(pose_at(x1), f2, relaxed);
+    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check_.below(pose_at(x2), f1, relaxed);
+  }
+  return std::min({lowest, f1, f2});
+}
+
 std::vector<Vec3> Planner::directions() const {
   std::vector<Vec3> dirs;
   auto add = [&](const Vec3& d) {
@@ -356,12 +320,54 @@ double room_along(const Aabb& box, const Vec3& p, const Vec3& u) {
   return std::max(t, 0.0);
 }
 
-// Start in contact: a translation along one of the candidate directions, certified with the
-// contact pairs exempt, to the nearest pose where the full clearance holds.
+// Directions that separate the body from the obstacle faces it touches at `start`: each
+// touched face's normal, oriented toward the body (toward the touching body triangle, or toward
+// the body's reference point when the two are coplanar), and the normalised sum of every two of
+// them (a peg resting on the bottom of its hole and against a wall leaves diagonally). At most
+// 12 distinct normals are used, in the order of the pairs (sorted by triangle ids).
+std::vector<Vec3> separating_directions(const PlanScene& scene, const Pose& start, const TrianglePairs& pairs) {
+  std::vector<Vec3> normals;
+  auto add_unique = [](std::vector<Vec3>& list, const Vec3& d) {
+    if (!(d.norm() > 1e-12)) return;
+    const Vec3 u = d.normalized();
+    for (const Vec3& e : list)
+      if (e.dot(u) > 1.0 - 1e-9) return;
+    list.push_back(u);
+  };
+  const Vec3 body_center = start.apply(scene.reference);
+  for (const ContactPair& p : pairs.pairs) {
+    if (normals.size() >= 12) break;
+    const Triangle& o = scene.obstacles.triangles[p.triangle_a];
+    const Triangle& t = scene.body.triangles[p.triangle_b];
+    Vec3 n = (o.q - o.p).cross(o.r - o.p);
+    if (!(n.norm() > 0.0)) continue;
+    n.normalize();
+    const Vec3 toward = start.apply(centroid(t)) - centroid(o);
+    const double side = n.dot(toward);
+    const double scale = std::max(toward.norm(), 1e-300);
+    const double s = std::abs(side) > 1e-9 * scale ? side : n.dot(body_center - centroid(o));
+    if (s == 0.0) continue;
+    add_unique(normals, s > 0 ? n : Vec3(-n));
+  }
+  std::vector<Vec3> out = normals;
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    for (std::size_t j = i + 1; j < normals.size(); ++j) add_unique(out, normals[i] + normals[j]);
+  return out;
+}
+
+// Start in contact: a translation along one of the candidate directions (then the directions
+// that separate the body from what it touches), certified with the contact pairs exempt, to the
+// nearest pose where the full clearance holds.
 bool Planner::find_escape(Pose& escape) {
   const double size = std::max(sc_.obstacle_box.extent(), 2 * rmax_);
   double best = std::numeric_limits<double>::infinity();
-  for (const Vec3& u : directions()) {
+  std::vector<Vec3> candidates = directions();
+  for (const Vec3& d : separating_directions(sc_, start_, check_.exempt())) {
+    bool seen = false;
+    for (const Vec3& e : candidates) seen = seen || e.dot(d) > 1.0 - 1e-9;
+    if (!seen) candidates.push_back(d);
+  }
+  for (const Vec3& u : candidates) {
     const double room = room_along(bounds_, ref(start_), u);
     for (double s = 1e-3 * size; s <= room && s < best; s *= 1.5) {
       if (out_of_time()) return false;
@@ -657,9 +663,9 @@ PlanResult Planner::run() {
          << "); set planner.contact_tolerance for a part that starts in contact";
       return fail(PlanStatus::invalid_start, os.str());
     }
-    std::vector<char> body_in, obstacle_in;
-    contact_sets(sc_, start_, margin + pb_.contact_tolerance, body_in, obstacle_in);
-    check_.set_contact_model(body_in, obstacle_in);
+    check_.set_exempt(proximity_pairs(sc_.obstacle_tree, Pose{}, sc_.body_tree, start_,
+                                      {.threshold = margin + pb_.contact_tolerance})
+                          .pairs);
     Pose escape;
     if (!find_escape(escape)) {
       return fail(out_of_time() ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
@@ -727,54 +733,39 @@ PlanResult Planner::run() {
   // Final certification of every segment, and the smallest distance along the path (exact
   // distances at samples; the certificate guarantees the margin in between).
   check_.set_deadline(std::nullopt);  // the found path is certified in full, whatever the time
-  // Segments in parallel, results read in order: the same outcome at any thread count. The
-  // smallest distance of a segment: exact at its two waypoints (each waypoint's distance is
-  // computed once, for both segments that share it) and at 15 samples in between, then a
-  // golden-section search around the smallest. An in-between sample only matters when it is
-  // below the segment's smallest so far, so its query may stop as soon as it proves it is not.
-  constexpr int kSamples = 16;
+  // Segments in parallel, results read in order: the same outcome at any thread count.
   const std::size_t segments = full.size() - 1;
   std::vector<double> at_waypoint(full.size(), std::numeric_limits<double>::infinity());
-  tbb::parallel_for(std::size_t{0}, full.size(), [&](std::size_t w) {
-    if (w < fixed) return;  // the escape from contact is closer than the margin by design
-    at_waypoint[w] = check_.exact(full[w]);
-  });
+  tbb::parallel_for(std::size_t{0}, full.size(), [&](std::size_t w) { at_waypoint[w] = check_.exact(full[w]); });
   std::vector<char> certified(segments, 0);
   std::vector<double> seg_min(segments, std::numeric_limits<double>::infinity());
+  std::vector<double> escape_min(segments, std::numeric_limits<double>::infinity());
   tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
-    const bool relaxed = i < fixed;
-    // The waypoints' exact distances are the certificate's end bounds.
-    certified[i] = relaxed ? check_.certify(full[i], -1, full[i + 1], -1, true)
-                           : check_.certify(full[i], at_waypoint[i], full[i + 1], at_waypoint[i + 1]);
-    if (relaxed) return;
     auto pose_at = [&](double t) { return interpolate(full[i], full[i + 1], t, c_); };
-    int best = 0;
-    seg_min[i] = at_waypoint[i];
-    for (int k = 1; k < kSamples; ++k) {
-      const double d = check_.below(pose_at(static_cast<double>(k) / kSamples), seg_min[i]);
-      if (d < seg_min[i]) seg_min[i] = d, best = k;
+    if (i < fixed) {
+      // The escape from contact: certified with the exempt pairs left out; its two figures are
+      // the smallest distance over all pairs (the start's contact) and over the others.
+      certified[i] = check_.certify(full[i], -1, full[i + 1], -1, /*relaxed=*/true);
+      seg_min[i] = sampled_minimum(pose_at, at_waypoint[i], at_waypoint[i + 1], false);
+      escape_min[i] = sampled_minimum(pose_at, check_.exact(full[i], true), check_.exact(full[i + 1], true), true);
+      return;
     }
-    if (at_waypoint[i + 1] < seg_min[i]) seg_min[i] = at_waypoint[i + 1], best = kSamples;
-    // Golden section: each new point is compared with the interior point kept from the last
-    // step (exact), so its query may stop once it proves it is not below (+∞: the new point is
-    // dropped at the next step, and the kept interior value is always exact).
-    double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = check_.exact(pose_at(x1)), f2 = check_.below(pose_at(x2), f1);
-    for (int it = 0; it < 24; ++it) {
-      if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check_.below(pose_at(x1), f2);
-      else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check_.below(pose_at(x2), f1);
-    }
-    seg_min[i] = std::min({seg_min[i], f1, f2});
+    // The waypoints' exact distances are the certificate's end bounds.
+    certified[i] = check_.certify(full[i], at_waypoint[i], full[i + 1], at_waypoint[i + 1]);
+    seg_min[i] = sampled_minimum(pose_at, at_waypoint[i], at_waypoint[i + 1], false);
   });
   double min_d = std::numeric_limits<double>::infinity();
+  double min_escape = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < segments; ++i) {
     if (!certified[i])
       return fail(PlanStatus::no_path_resolution, "internal: a segment of the found path failed its final certification");
     min_d = std::min(min_d, seg_min[i]);
+    min_escape = std::min(min_escape, escape_min[i]);
   }
-  if (!std::isfinite(min_d)) min_d = check_.exact(full.back());
+  if (!std::isfinite(min_d)) min_d = at_waypoint.back();
+  r.escape_segments = fixed;
+  r.exempt_pairs = check_.exempt().size();
+  r.escape_clearance = min_escape;
   r.status = PlanStatus::solved;
   r.path.poses = std::move(full);
   for (std::size_t i = 0; i + 1 < r.path.poses.size(); ++i) {

@@ -82,10 +82,11 @@ struct DistanceSearch {
   const Bvh& b;
   const Relative& rel;
   double rel_err, abs_err, enough;
+  const TrianglePairs* exclude = nullptr;  ///< pairs left out (the planner's contact exemption)
 
   DistanceSearch(const Bvh& a_, const Bvh& b_, const Relative& rel_, double rel_err_,
-                 double abs_err_, double enough_)
-      : a(a_), b(b_), rel(rel_), rel_err(rel_err_), abs_err(abs_err_), enough(enough_) {}
+                 double abs_err_, double enough_, const TrianglePairs* exclude_ = nullptr)
+      : a(a_), b(b_), rel(rel_), rel_err(rel_err_), abs_err(abs_err_), enough(enough_), exclude(exclude_) {}
 
   double best = kInf;
   bool have_witness = false;
@@ -127,6 +128,7 @@ struct DistanceSearch {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
       const Triangle tb = rel.apply(b.triangles[j]);
       for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+        if (exclude && exclude->contains(a.triangle_ids[i], b.triangle_ids[j])) continue;
         ++stats.triangle_tests;
         TriangleDistance d;
         if (triangle_distance_below(a.triangles[i], tb, best, d) && d.distance < best) {
@@ -210,15 +212,17 @@ struct DistanceSearch {
 DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
                                  const Relative& rel, const DistanceRequest& request) {
   const double rel_err = std::max(0.0, request.rel_err), abs_err = std::max(0.0, request.abs_err);
-  DistanceSearch warm(a, b, rel, rel_err, abs_err, request.enough);
-  DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough);
+  DistanceSearch warm(a, b, rel, rel_err, abs_err, request.enough, request.exclude);
+  DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough, request.exclude);
   const DistanceSearch* used = &cold;
 
   // Overlapping models: a first-contact search finds a touching pair far faster than the
   // distance search would single out a zero among many near-zero bounds. It costs little when
   // the models are apart (most node pairs are rejected near the root).
+  // (Not with pairs left out: the first contact may be one of them.)
   std::int32_t ci = -1, cj = -1;
-  const CollideResult contact = collide_relative(a, b, rel, {}, &ci, &cj);
+  const CollideResult contact =
+      request.exclude ? CollideResult{} : collide_relative(a, b, rel, {}, &ci, &cj);
   warm.stats = contact.stats;
   if (contact.colliding) {
     const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
@@ -267,6 +271,64 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
 }
 
 }  // namespace
+
+bool TrianglePairs::contains(std::uint32_t triangle_a, std::uint32_t triangle_b) const {
+  const ContactPair key{triangle_a, triangle_b};
+  return std::binary_search(pairs.begin(), pairs.end(), key, [](const ContactPair& x, const ContactPair& y) {
+    return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
+  });
+}
+
+ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                                const ProximityRequest& request) {
+  ProximityResult out;
+  const double threshold = request.threshold;
+  if (a.empty() || b.empty() || !(threshold > 0.0)) return out;
+  const Relative rel(pose_a, pose_b);
+  // A node pair whose RSS lower bound reaches the threshold holds no reported pair.
+  auto far = [&](std::int32_t ia, std::int32_t ib) {
+    ++out.stats.bv_tests;
+    const Rss& na = a.nodes[ia].bv;
+    const Rss& nb = b.nodes[ib].bv;
+    const double radii = na.radius + nb.radius;
+    return rectangle_lower_bound(node_pair(na, nb, rel), threshold + radii) - radii >= threshold;
+  };
+  if (far(0, 0)) return out;
+  PairStack stack(a, b);
+  stack.push(0, 0, 0.0);
+  while (!stack.empty()) {
+    const detail::PairEntry e = stack.pop();
+    const Node& na = a.nodes[e.a];
+    const Node& nb = b.nodes[e.b];
+    if (na.is_leaf() && nb.is_leaf()) {
+      for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+        const Triangle tb = rel.apply(b.triangles[j]);
+        for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+          ++out.stats.triangle_tests;
+          TriangleDistance d;
+          if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold)
+            out.pairs.pairs.push_back({a.triangle_ids[i], b.triangle_ids[j]});
+        }
+      }
+      continue;
+    }
+    if (descend_a(na, nb)) {
+      for (std::int32_t c = na.first + 1; c >= na.first; --c)
+        if (!far(c, e.b)) stack.push(c, e.b, 0.0);
+    } else {
+      for (std::int32_t c = nb.first + 1; c >= nb.first; --c)
+        if (!far(e.a, c)) stack.push(e.a, c, 0.0);
+    }
+  }
+  auto& v = out.pairs.pairs;
+  std::sort(v.begin(), v.end(), [](const ContactPair& x, const ContactPair& y) {
+    return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
+  });
+  v.erase(std::unique(v.begin(), v.end(), [](const ContactPair& x, const ContactPair& y) {
+            return x.triangle_a == y.triangle_a && x.triangle_b == y.triangle_b;
+          }), v.end());
+  return out;
+}
 
 CollideResult collide(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
                       const CollideRequest& request) {

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -70,7 +71,16 @@ struct PlanResult {
   double path_length = 0.0;         ///< Σ metric length ‖Δc‖ + r_max·θ
   double translation_length = 0.0;  ///< Σ ‖Δc‖
   double rotation_length = 0.0;     ///< Σ θ, radians
-  double min_clearance = 0.0;       ///< smallest distance found along the path (≥ the margin)
+  /// Smallest exact distance found along the whole path, every segment and every triangle pair
+  /// included: ≥ the margin, except after a start in contact (then it is at most the start's
+  /// distance, and `escape_clearance` says what the escape kept).
+  double min_clearance = 0.0;
+  /// After a start in contact: the number of leading escape segments (0 or 1), the triangle
+  /// pairs exempt along them (closer than clearance + contact tolerance at the start), and the
+  /// smallest distance of every other pair along them (≥ the margin; +∞ without an escape).
+  std::size_t escape_segments = 0;
+  std::size_t exempt_pairs = 0;
+  double escape_clearance = std::numeric_limits<double>::infinity();
   struct {
     double build = 0, search = 0, smooth = 0, total = 0;
   } time_ms;

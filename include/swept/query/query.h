@@ -29,6 +29,13 @@ struct ContactPair {
   std::uint32_t triangle_a = 0;
   std::uint32_t triangle_b = 0;
 };
+/// A set of triangle pairs (A's id, B's id, as in `Bvh::triangle_ids`), sorted by
+/// (triangle_a, triangle_b) without repeats.
+struct TrianglePairs {
+  std::vector<ContactPair> pairs;
+  bool contains(std::uint32_t triangle_a, std::uint32_t triangle_b) const;
+  std::size_t size() const { return pairs.size(); }
+};
 struct CollideResult {
   bool colliding = false;
   std::vector<ContactPair> contacts;  ///< all pairs (all_contacts) or the first one; sorted
@@ -47,6 +54,10 @@ struct DistanceRequest {
   /// as soon as the distance is proven ≥ `enough`, stop; then `distance` is a lower bound
   /// (≥ enough) and `exact` is false.
   double enough = std::numeric_limits<double>::infinity();
+  /// Triangle pairs left out (not owned; null: none). The result is then the distance over
+  /// every other pair of triangles, which can be larger than the distance between the models:
+  /// this is the contact exemption of the planner's escape from a start in contact.
+  const TrianglePairs* exclude = nullptr;
 };
 struct DistanceResult {
   double distance = std::numeric_limits<double>::infinity();
@@ -59,6 +70,19 @@ struct DistanceResult {
 };
 DistanceResult distance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
                         const DistanceRequest& request = {});
+
+// ---- proximity pairs ----------------------------------------------------------------------------
+struct ProximityRequest {
+  double threshold = 0.0;  ///< in the model unit; pairs at distance < threshold are reported
+};
+struct ProximityResult {
+  TrianglePairs pairs;  ///< every triangle pair closer than the threshold (ids as triangle_ids)
+  QueryStats stats;
+};
+/// Every pair of triangles (one of A, one of B) whose exact distance is below the threshold:
+/// the contacts of a part at its mounted pose. Threshold ≤ 0 gives no pairs.
+ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                                const ProximityRequest& request);
 
 // ---- tolerance ---------------------------------------------------------------------------------
 struct ToleranceRequest {
