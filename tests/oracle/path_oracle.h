@@ -1,0 +1,86 @@
+#pragma once
+/// An independent checker of planned paths for the test suite. It shares no code with swept:
+/// only Eigen (and oneTBB inside), its own exact triangle–triangle distance, its own box trees,
+/// its own motion and its own certificate. Agreement between this and the planner is evidence
+/// that neither is wrong in the same way.
+///
+/// Units are whatever the caller's coordinates are in; frames are named on every field.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace oracle {
+
+/// A triangle by its three corners. Zero-area and sliver triangles are allowed.
+struct Tri {
+  Eigen::Vector3d v[3];
+};
+
+/// A rigid placement: x_world = R · x_body + t. R must be a rotation matrix.
+struct RigidPose {
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+};
+
+struct PathCheckInput {
+  std::vector<Tri> obstacles;  ///< world frame
+  std::vector<Tri> body;       ///< body frame
+  std::vector<RigidPose> poses;  ///< the path's waypoints, in order
+  /// Body-frame point that moves on a straight line between waypoints; the rotation is the
+  /// shortest slerp about it.
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  double clearance = 0;  ///< distance required along the whole continuous motion
+  /// > 0: a start closer than `clearance` may escape along a translational first segment, with
+  /// the triangle pairs closer than clearance + contact_tolerance at the start exempt.
+  double contact_tolerance = 0;
+  /// Total dense samples, spread over the segments by length (at least 16 intervals each).
+  int dense_samples = 2000;
+  /// Safety caps of one segment's certificate: exceeded → "not certified".
+  int max_certificate_queries = 200000;
+  int max_certificate_depth = 60;
+};
+
+struct PathCheckReport {
+  bool valid = false;  ///< every segment certified (with the exemption where it applies)
+  std::string why;     ///< when not valid: segment, t, distance found, triangle pair
+  int bad_segment = -1;
+  double bad_t = -1;
+  /// Smallest exact distance over all triangle pairs at the dense samples (escape included).
+  double dense_min = std::numeric_limits<double>::infinity();
+  /// Largest motion-metric length between consecutive dense samples: the true minimum along
+  /// the path is at least dense_min − dense_spacing/2.
+  double dense_spacing = 0;
+  bool escape = false;  ///< the first segment was checked with the contact exemption
+  std::size_t exempt_pairs = 0;
+  /// Smallest distance of the non-exempt pairs at the escape segment's dense samples.
+  double escape_dense_min = std::numeric_limits<double>::infinity();
+  std::size_t certificate_queries = 0;  ///< exact distance queries spent on certificates
+};
+
+/// Checks a path: the Schwarzer–Saha–Latombe (2005) certificate of every segment with exact
+/// distances, and dense exact distances. The escape rule (docs/planner.md, "Starting in
+/// contact"): when contact_tolerance > 0 and the start's distance is ≤ clearance, the first
+/// segment must be a pure translation, along which the pairs (obstacle i, body j) closer than
+/// clearance + contact_tolerance at the start are exempt; every other pair keeps > clearance,
+/// the escape's end has full clearance, and later segments are checked with all pairs.
+PathCheckReport check_path(const PathCheckInput& input);
+
+/// Exact distance between two triangles: 0 when they intersect (including coplanar overlap),
+/// else the smallest of the vertex–triangle and edge–edge distances. Never NaN for finite input.
+double triangle_distance(const Tri& a, const Tri& b);
+
+/// Exact smallest distance between two triangle sets in the same frame (+∞ if one is empty).
+double exact_distance(const std::vector<Tri>& obstacles_world, const std::vector<Tri>& body_world);
+
+/// Where the body is at parameter s ∈ [0, 1] of the motion from `a` to `b`: the reference
+/// point moves linearly, the rotation is the shortest slerp.
+RigidPose interpolate_pose(const RigidPose& a, const RigidPose& b, double s, const Eigen::Vector3d& reference);
+
+/// Rotation angle between two orientations, in [0, π].
+double rotation_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
+
+}  // namespace oracle
