@@ -185,6 +185,34 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         const ToleranceResult out = tolerance(a, pa, b, pb, {.tolerance = bd.distance * 0.99});
         EXPECT_FALSE(out.within);
       }
+
+      // Proximity pairs: exactly the pairs closer than the threshold; then the distance with
+      // those pairs left out is the smallest distance of all the other pairs.
+      {
+        const double threshold = 2.0 * bd.distance + 0.05;
+        const std::vector<Triangle> bb = test::b_in_a(s.b, pa, pb);
+        std::vector<ContactPair> near;
+        double rest = std::numeric_limits<double>::infinity();
+        for (std::uint32_t i = 0; i < s.a.size(); ++i)
+          for (std::uint32_t j = 0; j < bb.size(); ++j) {
+            const double dij = triangle_distance(s.a[i], bb[j]).distance;
+            if (dij < threshold) near.push_back({i, j});
+            else rest = std::min(rest, dij);
+          }
+        const ProximityResult pr = proximity_pairs(a, pa, b, pb, {.threshold = threshold});
+        ASSERT_EQ(pr.pairs.size(), near.size());
+        for (std::size_t i = 0; i < near.size(); ++i) {
+          EXPECT_EQ(pr.pairs.pairs[i].triangle_a, near[i].triangle_a);
+          EXPECT_EQ(pr.pairs.pairs[i].triangle_b, near[i].triangle_b);
+        }
+        const DistanceResult dx = distance(a, pa, b, pb, {.exclude = &pr.pairs});
+        if (std::isfinite(rest)) {
+          EXPECT_NEAR(dx.distance, rest, 1e-12 * rest);
+          EXPECT_FALSE(pr.pairs.contains(dx.triangle_a, dx.triangle_b));
+        } else {
+          EXPECT_EQ(dx.distance, rest);
+        }
+      }
     }
   }
   EXPECT_GT(colliding, 10);
