@@ -7,7 +7,9 @@
 // at any thread count and its results are consumed in path order.
 #include "swept/plan/planner.h"
 
+#include "checker.h"
 #include "swept/bvh/fitter.h"
+#include "swept/plan/check.h"
 #include "swept/geometry/distance.h"
 #include "swept/query/query.h"
 
@@ -31,96 +33,13 @@ namespace swept {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using detail::Checker;
 
 Mat3 exp_rotation(const Vec3& w) {
   const double angle = w.norm();
   if (angle == 0.0) return Mat3::Identity();
   return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
 }
-
-// Distance bounds and motion certificates against the obstacles, with query counters. In
-// `relaxed` mode (the escape from a start in contact) the triangle pairs that were closer than
-// clearance + contact tolerance at the start are left out, pair by pair; every other pair of
-// triangles is checked.
-class Checker {
- public:
-  Checker(const PlanScene& scene, double margin) : s_(scene), margin_(margin) {}
-
-  /// The pairs (obstacle triangle, body triangle) that relaxed queries leave out.
-  void set_exempt(TrianglePairs pairs) { exempt_ = std::move(pairs); }
-  const TrianglePairs& exempt() const { return exempt_; }
-
-  /// A lower bound on the distance at `pose`, exact below `enough`.
-  double clearance(const Pose& pose, double enough, bool relaxed = false) const {
-    ++distance_queries;
-    const DistanceRequest req{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr};
-    return distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, req).distance;
-  }
-
-  /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
-  double below(const Pose& pose, double bound, bool relaxed = false) const {
-    ++distance_queries;
-    const DistanceRequest req{.enough = bound, .exclude = relaxed ? &exempt_ : nullptr};
-    const DistanceResult d = distance(s_.obstacle_tree, Pose{}, s_.body_tree, pose, req);
-    return d.exact ? d.distance : std::numeric_limits<double>::infinity();
-  }
-
-  /// Exact distance at `pose` (for reporting clearance).
-  double exact(const Pose& pose, bool relaxed = false) const {
-    return below(pose, std::numeric_limits<double>::infinity(), relaxed);
-  }
-
-  double length(const Pose& a, const Pose& b) const {
-    return motion_length(a, b, s_.reference, s_.radius);
-  }
-
-  /// Is the straight motion a → b free with distance > margin everywhere? `da`, `db` are known
-  /// lower bounds at the ends (negative: unknown). Schwarzer–Saha–Latombe bisection.
-  bool certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const {
-    struct Piece {
-      double t0, d0, t1, d1;
-    };
-    // The allowance covers rounding in the interpolated poses (as motion_clearance does).
-    const double total = length(a, b) * (1.0 + 1e-9);
-    if (total == 0.0) return true;
-    auto at = [&](double t) { return interpolate(a, b, t, s_.reference); };
-    if (da < 0) da = clearance(a, margin_ + total, relaxed);
-    if (db < 0) db = clearance(b, margin_ + total, relaxed);
-    if (da <= margin_ || db <= margin_) return false;
-    std::vector<Piece> stack{{0.0, da, 1.0, db}};
-    int queries = 0;
-    while (!stack.empty()) {
-      const Piece p = stack.back();
-      stack.pop_back();
-      const double len = total * (p.t1 - p.t0);
-      if (len < (p.d0 - margin_) + (p.d1 - margin_)) continue;
-      // The certificate needs this piece split: too many pieces means the motion grazes the
-      // margin; refuse rather than loop.
-      if (++queries > kMaxQueriesPerEdge || p.t1 - p.t0 < 1e-9) return false;
-      // Past the search's deadline a long certificate gives up (conservatively: not free).
-      if ((queries & 63) == 0 && deadline_ && Clock::now() > *deadline_) return false;
-      const double tm = 0.5 * (p.t0 + p.t1);
-      const double dm = clearance(at(tm), margin_ + 0.5 * len, relaxed);
-      if (dm <= margin_) return false;
-      stack.push_back({tm, dm, p.t1, p.d1});
-      stack.push_back({p.t0, p.d0, tm, dm});
-    }
-    return true;
-  }
-
-  double margin() const { return margin_; }
-  /// While set, certificates that run past this time give up (not free).
-  void set_deadline(std::optional<Clock::time_point> t) { deadline_ = t; }
-
-  mutable std::atomic<std::uint64_t> distance_queries{0};
-  static constexpr int kMaxQueriesPerEdge = 200000;
-
- private:
-  const PlanScene& s_;
-  double margin_;
-  TrianglePairs exempt_;
-  std::optional<Clock::time_point> deadline_;
-};
 
 // ---- the grid ---------------------------------------------------------------------------------
 
@@ -220,13 +139,6 @@ class Planner {
     return n;
   }
 
-  // The smallest exact distance along a segment (pose_at(t), t in [0, 1]) with exact end values
-  // `d0`, `d1`: 15 samples in between, then a golden-section search around the smallest. A
-  // sample only matters when it is below the smallest so far, so its query stops as soon as it
-  // proves it is not. `relaxed`: with the exempt pairs left out.
-  template <class PoseAt>
-  double sampled_minimum(const PoseAt& pose_at, double d0, double d1, bool relaxed) const;
-
   bool straight_line_phase(std::vector<Pose>& out);
   bool grid_phase(std::vector<Pose>& out, PlanStatus& why);
   bool search_level(int level, std::size_t budget, std::vector<Key>& path, bool& exhausted);
@@ -263,30 +175,6 @@ class Planner {
   int level_reached_ = 0;
   double last_progress_ = -1.0;
 };
-
-template <class PoseAt>
-double Planner::sampled_minimum(const PoseAt& pose_at, double d0, double d1, bool relaxed) const {
-  constexpr int kSamples = 16;
-  int best = 0;
-  double lowest = d0;
-  for (int k = 1; k < kSamples; ++k) {
-    const double d = check_.below(pose_at(static_cast<double>(k) / kSamples), lowest, relaxed);
-    if (d < lowest) lowest = d, best = k;
-  }
-  if (d1 < lowest) lowest = d1, best = kSamples;
-  // Golden section: each new point is compared with the interior point kept from the last step
-  // (exact), so its query may stop once it proves it is not below (+∞: the new point is dropped
-  // at the next step, and the kept interior value is always exact).
-  double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-  double f1 = check_.exact(pose_at(x1), relaxed), f2 = check_.below(pose_at(x2), f1, relaxed);
-  for (int it = 0; it < 24; ++it) {
-    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check_.below(pose_at(x1), f2, relaxed);
-    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check_.below(pose_at(x2), f1, relaxed);
-  }
-  return std::min({lowest, f1, f2});
-}
 
 std::vector<Vec3> Planner::directions() const {
   std::vector<Vec3> dirs;
@@ -730,42 +618,18 @@ PlanResult Planner::run() {
   const double t_smooth = elapsed_s();
   r.time_ms.smooth = (t_smooth - t_search) * 1e3;
 
-  // Final certification of every segment, and the smallest distance along the path (exact
-  // distances at samples; the certificate guarantees the margin in between).
-  check_.set_deadline(std::nullopt);  // the found path is certified in full, whatever the time
-  // Segments in parallel, results read in order: the same outcome at any thread count.
-  const std::size_t segments = full.size() - 1;
-  std::vector<double> at_waypoint(full.size(), std::numeric_limits<double>::infinity());
-  tbb::parallel_for(std::size_t{0}, full.size(), [&](std::size_t w) { at_waypoint[w] = check_.exact(full[w]); });
-  std::vector<char> certified(segments, 0);
-  std::vector<double> seg_min(segments, std::numeric_limits<double>::infinity());
-  std::vector<double> escape_min(segments, std::numeric_limits<double>::infinity());
-  tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
-    auto pose_at = [&](double t) { return interpolate(full[i], full[i + 1], t, c_); };
-    if (i < fixed) {
-      // The escape from contact: certified with the exempt pairs left out; its two figures are
-      // the smallest distance over all pairs (the start's contact) and over the others.
-      certified[i] = check_.certify(full[i], -1, full[i + 1], -1, /*relaxed=*/true);
-      seg_min[i] = sampled_minimum(pose_at, at_waypoint[i], at_waypoint[i + 1], false);
-      escape_min[i] = sampled_minimum(pose_at, check_.exact(full[i], true), check_.exact(full[i + 1], true), true);
-      return;
-    }
-    // The waypoints' exact distances are the certificate's end bounds.
-    certified[i] = check_.certify(full[i], at_waypoint[i], full[i + 1], at_waypoint[i + 1]);
-    seg_min[i] = sampled_minimum(pose_at, at_waypoint[i], at_waypoint[i + 1], false);
-  });
-  double min_d = std::numeric_limits<double>::infinity();
-  double min_escape = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < segments; ++i) {
-    if (!certified[i])
-      return fail(PlanStatus::no_path_resolution, "internal: a segment of the found path failed its final certification");
-    min_d = std::min(min_d, seg_min[i]);
-    min_escape = std::min(min_escape, escape_min[i]);
-  }
-  if (!std::isfinite(min_d)) min_d = at_waypoint.back();
-  r.escape_segments = fixed;
-  r.exempt_pairs = check_.exempt().size();
-  r.escape_clearance = min_escape;
+  // Final certification of every segment and the smallest distance along the path, by the
+  // same function `swept check` runs (check_path.cpp), whatever the time.
+  const PathCheckResult final_check = check_path(pb_, sc_, Path{full});
+  if (!final_check.valid)
+    return fail(PlanStatus::no_path_resolution,
+                "internal: the found path failed its final certification: " + final_check.message);
+  if (final_check.escape_segments != fixed)
+    return fail(PlanStatus::no_path_resolution, "internal: the final certification disagrees on the escape from contact");
+  const double min_d = final_check.min_clearance;
+  r.escape_segments = final_check.escape_segments;
+  r.exempt_pairs = final_check.exempt_pairs;
+  r.escape_clearance = final_check.escape_clearance;
   r.status = PlanStatus::solved;
   r.path.poses = std::move(full);
   for (std::size_t i = 0; i + 1 < r.path.poses.size(); ++i) {
@@ -778,7 +642,7 @@ PlanResult Planner::run() {
   r.min_clearance = min_d;
   r.path_hash = path_hash(r.path);
   r.edges_checked = edges_checked_;
-  r.queries.distance = check_.distance_queries.load();
+  r.queries.distance = check_.distance_queries.load() + final_check.distance_queries;
   r.time_ms.total = elapsed_s() * 1e3;
   std::ostringstream os;
   os << "solved" << (r.level < 0 ? " by straight moves" : " on the grid at level " + std::to_string(r.level)) << ": "

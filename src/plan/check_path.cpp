@@ -1,0 +1,162 @@
+// The final certification of a path (the planner's last phase, and `swept check`): every
+// segment certified with the planner's certificate (checker.h), the smallest exact distance
+// found along it, and the start-contact exemption applied pair by pair (docs/planner.md).
+#include "swept/plan/check.h"
+
+#include "checker.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace swept {
+namespace {
+
+using detail::Checker;
+
+struct Minimum {
+  double value = std::numeric_limits<double>::infinity();
+  double t = 0.0;
+};
+
+// The smallest exact distance along a segment (pose_at(t), t in [0, 1]) with exact end values
+// `d0`, `d1`: 15 samples in between, then a golden-section search around the smallest. A sample
+// only matters when it is below the smallest so far, so its query stops as soon as it proves it
+// is not (`below` gives +∞ then). `relaxed`: with the exempt pairs left out.
+template <class PoseAt>
+Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, double d1, bool relaxed) {
+  constexpr int kSamples = 16;
+  int best = 0;
+  Minimum m{d0, 0.0};
+  for (int k = 1; k < kSamples; ++k) {
+    const double t = static_cast<double>(k) / kSamples;
+    const double d = check.below(pose_at(t), m.value, relaxed);
+    if (d < m.value) m = {d, t}, best = k;
+  }
+  if (d1 < m.value) m = {d1, 1.0}, best = kSamples;
+  // Golden section: each new point is compared with the interior point kept from the last step
+  // (exact), so its query may stop once it proves it is not below (+∞: the new point is dropped
+  // at the next step, and the kept interior value is always exact).
+  double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = check.exact(pose_at(x1), relaxed), f2 = check.below(pose_at(x2), f1, relaxed);
+  for (int it = 0; it < 24; ++it) {
+    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check.below(pose_at(x1), f2, relaxed);
+    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check.below(pose_at(x2), f1, relaxed);
+  }
+  if (f1 < m.value) m = {f1, x1};
+  if (f2 < m.value) m = {f2, x2};
+  return m;
+}
+
+}  // namespace
+
+PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const Path& path,
+                           const PathCheckOptions& options) {
+  PathCheckResult out;
+  const double margin = options.clearance.value_or(problem.clearance);
+  out.clearance = margin;
+  const Vec3 reference = options.reference_point.value_or(scene.reference);
+  Checker check(scene, margin, reference);
+  const std::vector<Pose>& poses = path.poses;
+  if (poses.empty()) {
+    out.message = "the path has no poses";
+    return out;
+  }
+  auto pose_on = [&](std::size_t i, double t) {
+    return t <= 0.0 ? poses[i] : (t >= 1.0 ? poses[i + 1] : interpolate(poses[i], poses[i + 1], t, reference));
+  };
+
+  std::vector<double> at_waypoint(poses.size());
+  tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t w) { at_waypoint[w] = check.exact(poses[w]); });
+  // A start in contact: the first segment is the escape (docs/planner.md, "Starting in contact").
+  const std::size_t segments = poses.size() - 1;
+  bool escape = false;
+  if (segments > 0 && at_waypoint[0] <= margin && problem.contact_tolerance > 0.0) {
+    escape = true;
+    out.escape_segments = 1;
+    check.set_exempt(proximity_pairs(scene.obstacle_tree, Pose{}, scene.body_tree, poses[0],
+                                        {.threshold = margin + problem.contact_tolerance})
+                            .pairs);
+    out.exempt_pairs = check.exempt().size();
+  }
+
+  out.segments.resize(segments);
+  tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
+    SegmentCheck& sc = out.segments[i];
+    auto pose_at = [&](double t) { return pose_on(i, t); };
+    detail::Blocked blocked;
+    if (escape && i == 0) {
+      sc.escape = true;
+      // An escape is a pure translation; its end must have the full clearance.
+      const bool translation = rotation_angle(poses[0].rotation, poses[1].rotation) <= 1e-12;
+      sc.certified = translation && at_waypoint[1] > margin &&
+                     check.certify(poses[0], -1, poses[1], -1, /*relaxed=*/true, &blocked);
+      if (!translation) blocked = {0.0, at_waypoint[0]};
+      else if (!(at_waypoint[1] > margin)) blocked = {1.0, at_waypoint[1]};
+      const Minimum other =
+          sampled_minimum(check, pose_at, check.exact(poses[0], true), check.exact(poses[1], true), true);
+      sc.min_distance_other_pairs = other.value;
+    } else {
+      // The waypoints' exact distances are the certificate's end bounds.
+      sc.certified = check.certify(poses[i], at_waypoint[i], poses[i + 1], at_waypoint[i + 1], false, &blocked);
+    }
+    const Minimum m = sampled_minimum(check, pose_at, at_waypoint[i], at_waypoint[i + 1], false);
+    sc.min_distance = m.value;
+    sc.t_min = m.t;
+    if (!sc.certified) {
+      sc.t_blocked = blocked.t;
+      sc.distance_at_block = blocked.distance;
+    }
+  });
+
+  // Results read in order: the same at any thread count.
+  out.min_clearance = at_waypoint[0];
+  out.min_pose = poses[0];
+  for (std::size_t i = 0; i < segments; ++i) {
+    const SegmentCheck& sc = out.segments[i];
+    if (sc.min_distance < out.min_clearance) {
+      out.min_clearance = sc.min_distance;
+      out.min_segment = i;
+      out.min_t = sc.t_min;
+      out.min_pose = pose_on(i, sc.t_min);
+    }
+    out.escape_clearance = std::min(out.escape_clearance, sc.min_distance_other_pairs);
+    if (!sc.certified && !out.first_bad_segment) {
+      out.first_bad_segment = i;
+      const double t = std::max(sc.t_blocked, 0.0);
+      out.first_bad_pose = pose_on(i, t);
+      out.first_bad_distance = sc.t_blocked >= 0.0 ? sc.distance_at_block : check.exact(out.first_bad_pose);
+    }
+  }
+  out.distance_queries = check.distance_queries.load();
+  std::ostringstream os;
+  if (segments == 0) {
+    out.valid = at_waypoint[0] > margin;
+    os << (out.valid ? "valid: a single pose, " : "not valid: a single pose ") << "at distance " << at_waypoint[0]
+       << " (clearance " << margin << ")";
+  } else if (!out.first_bad_segment) {
+    out.valid = true;
+    os << "valid: every one of the " << segments << " segments keeps the clearance " << margin;
+    if (escape) os << " (the first, an escape from contact, with " << out.exempt_pairs << " triangle pairs exempt)";
+  } else {
+    const std::size_t i = *out.first_bad_segment;
+    const SegmentCheck& sc = out.segments[i];
+    os << "not valid: segment " << i << " (waypoint " << i << " to " << i + 1 << ") ";
+    if (sc.escape && rotation_angle(poses[0].rotation, poses[1].rotation) > 1e-12)
+      os << "is an escape from contact but rotates (an escape must be a pure translation)";
+    else if (sc.t_blocked < 0.0)
+      os << "could not be certified within the query cap (it grazes the clearance)";
+    else if (sc.distance_at_block <= 0.0)
+      os << "is in collision at t = " << sc.t_blocked;
+    else
+      os << "comes within " << sc.distance_at_block << " at t = " << sc.t_blocked << " (clearance " << margin << ")";
+  }
+  out.message = os.str();
+  return out;
+}
+
+}  // namespace swept
