@@ -1,8 +1,10 @@
 // `swept plan` end to end: exit codes, the JSON document, the path files, determinism across
-// thread counts, and a golden path hash.
+// thread counts, and a golden path hash. Every path the command line writes is read back and
+// checked by the oracle of tests/oracle against the problem file it was planned for.
 #include "swept/plan/problem.h"
 #include "swept/scenes/box_problems.h"
 
+#include "plan/plan_support.h"
 #include "support/cli_support.h"
 
 #include <gtest/gtest.h>
@@ -23,6 +25,32 @@ namespace fs = std::filesystem;
 using test::CliRun;
 
 CliRun run(const std::string& args) { return test::run_cli("plan " + args, /*with_stderr=*/false); }
+
+// What `swept plan --json` reported about its path.
+test::PlannerFigures figures_of(const nlohmann::json& doc) {
+  test::PlannerFigures f;
+  f.min_clearance = doc.at("min_clearance").get<double>();
+  const auto& escape = doc.at("escape");
+  f.escape_segments = escape.is_null() ? 0 : escape.at("segments").get<std::size_t>();
+  if (!escape.is_null()) {
+    f.exempt_pairs = escape.at("exempt_pairs").get<std::size_t>();
+    f.escape_clearance = escape.at("min_clearance_other_pairs").get<double>();
+  }
+  return f;
+}
+
+// The path file the command line wrote, read back and checked by the oracle with the meshes and
+// settings of the problem file (read by the io layer, as the command line reads them).
+void check_written_path(const std::string& problem_file, const fs::path& path_file, const test::PlannerFigures& f = {}) {
+  auto problem = load_problem(problem_file);
+  ASSERT_TRUE(problem) << problem.error().message;
+  auto scene = load_scene(*problem, problem->fitter);
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto path = read_path(path_file);
+  ASSERT_TRUE(path) << path.error().message;
+  SCOPED_TRACE(path_file.string());
+  test::check_path_independently(*scene, *problem, *path, f);
+}
 
 class PlanCli : public ::testing::Test {
  protected:
@@ -53,20 +81,41 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   auto path = read_path(dir / "path.json");
   ASSERT_TRUE(path) << path.error().message;
   EXPECT_EQ(path->poses.size(), doc["waypoints"].get<std::size_t>());
+  check_written_path(p, dir / "path.json", figures_of(doc));
   // OMPL's .path format when the name says so.
   ASSERT_EQ(run(p + " -q -o " + (dir / "path.path").string()).code, 0);
   auto ompl = read_path(dir / "path.path");
   ASSERT_TRUE(ompl);
   EXPECT_EQ(ompl->poses.size(), path->poses.size());
+  check_written_path(p, dir / "path.path", figures_of(doc));
+}
+
+TEST_F(PlanCli, StartInContactEscapesAndTheOracleAgrees) {
+  // The peg rests on the bottom of its blind hole against one wall (distance 0): with a contact
+  // tolerance the first segment is an escape, which the oracle checks with its own exemption.
+  auto g = scenes::peg_in_hole(10.0, 1e-2);
+  g.name = "peg_contact";
+  g.problem.start = Pose::from_translation(Vec3(-1e-2 * 10.0, 0, -20 + 12.5));
+  g.problem.clearance = 0.01;
+  g.problem.contact_tolerance = 0.02;
+  const std::string p = problem(g);
+  const CliRun r = run(p + " --json -o " + (dir / "escape.json").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_FALSE(doc["escape"].is_null()) << r.out;
+  check_written_path(p, dir / "escape.json", figures_of(doc));
 }
 
 TEST_F(PlanCli, SameHashAtAnyThreadCountAndGolden) {
   const std::string p = problem(scenes::t_slot());
   std::vector<std::string> hashes;
   for (const char* threads : {"1", "2", "1"}) {
-    const CliRun r = run(p + " --json --threads " + threads);
+    const fs::path out = dir / (std::string("path_") + threads + ".json");
+    const CliRun r = run(p + " --json --threads " + threads + " -o " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
-    hashes.push_back(nlohmann::json::parse(r.out)["path_hash"].get<std::string>());
+    const auto doc = nlohmann::json::parse(r.out);
+    hashes.push_back(doc["path_hash"].get<std::string>());
+    if (hashes.size() == 1) check_written_path(p, out, figures_of(doc));  // the others are the same path
   }
   EXPECT_EQ(hashes[0], hashes[1]);
   EXPECT_EQ(hashes[0], hashes[2]);

@@ -174,6 +174,7 @@ PathCheckReport check_path(const PathCheckInput& in) {
     const Eigen::Vector3d cb = s.b.R * in.reference + s.b.t;
     s.length = (cb - ca).norm() + radius * s.angle;
     total += s.length;
+    rep.max_segment_length = std::max(rep.max_segment_length, s.length);
     segs.push_back(s);
   }
 

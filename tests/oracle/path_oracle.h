@@ -54,6 +54,7 @@ struct PathCheckReport {
   /// Largest motion-metric length between consecutive dense samples: the true minimum along
   /// the path is at least dense_min − dense_spacing/2.
   double dense_spacing = 0;
+  double max_segment_length = 0;  ///< longest segment in the motion metric ‖Δc‖ + r·θ
   bool escape = false;  ///< the first segment was checked with the contact exemption
   std::size_t exempt_pairs = 0;
   /// Smallest distance of the non-exempt pairs at the escape segment's dense samples.

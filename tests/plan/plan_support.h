@@ -1,5 +1,8 @@
 #pragma once
-// Problems generated for the planner tests, and an independent dense check of returned paths.
+// Problems generated for the planner tests, and independent checks of returned paths: a dense
+// check with swept's query layer (verify_path), and check_independently with the oracle of
+// tests/oracle, which shares no code with swept.
+#include "oracle/path_oracle.h"
 #include "support/test_support.h"
 #include "swept/plan/planner.h"
 #include "swept/query/query.h"
@@ -7,6 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
 #include <vector>
 
 namespace swept::test {
@@ -46,6 +53,87 @@ inline double verify_path(const PlanScene& s, const Path& path, double margin, b
   }
   EXPECT_GE(min_d, margin) << "the path comes closer than the margin";
   return min_d;
+}
+
+/// What the planner said about a path, where known (the command line prints it with --json).
+struct PlannerFigures {
+  std::optional<double> min_clearance;     ///< PlanResult::min_clearance
+  std::optional<std::size_t> escape_segments;
+  std::optional<std::size_t> exempt_pairs;
+  std::optional<double> escape_clearance;  ///< PlanResult::escape_clearance (+∞: no escape)
+};
+
+inline std::vector<oracle::Tri> oracle_triangles(const TriangleSoup& soup) {
+  std::vector<oracle::Tri> out;
+  out.reserve(soup.triangles.size());
+  for (const Triangle& t : soup.triangles) out.push_back({{t.p, t.q, t.r}});
+  return out;
+}
+
+/// The path checked by the oracle (tests/oracle): every segment certified with its own exact
+/// distances, the escape rule of docs/planner.md, and the planner's figures compared with the
+/// oracle's dense minimum.
+///
+/// The bound asserted on a reported minimum m (min_clearance over all pairs and segments;
+/// escape_clearance over the non-exempt pairs of the escape), with D_min the oracle's smallest
+/// exact distance at its dense samples, h their largest spacing (motion metric) and L the
+/// longest segment:
+///   D_min − h/2 − 1e-9  ≤  m  ≤  D_min + L/32 + 1e-9.
+/// Lower: m is an exact distance at some pose on the path, so m ≥ the true minimum; distance
+/// changes no faster than the motion metric, so the true minimum is ≥ D_min − h/2. Upper: the
+/// planner samples every segment at 17 equally spaced points (its waypoints and 15 inside, then
+/// a golden-section search that can only lower the minimum), so the true minimum lies within
+/// L/32 of one of its samples and m ≤ true minimum + L/32 ≤ D_min + L/32. 1e-9 absorbs
+/// rounding (paths written as text included).
+inline oracle::PathCheckReport check_path_independently(const PlanScene& s, const Problem& problem, const Path& path,
+                                                        const PlannerFigures& figures = {}) {
+  oracle::PathCheckInput in;
+  in.obstacles = oracle_triangles(s.obstacles);
+  in.body = oracle_triangles(s.body);
+  for (const Pose& p : path.poses) in.poses.push_back({p.rotation, p.translation});
+  in.reference = s.reference;
+  in.clearance = problem.clearance;
+  in.contact_tolerance = problem.contact_tolerance;
+  const auto t0 = std::chrono::steady_clock::now();
+  const oracle::PathCheckReport rep = oracle::check_path(in);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("oracle: %zu x %zu triangles, %zu segments: %s, dense min %.6g (spacing %.3g), %zu certificate queries, %.0f ms\n",
+              in.obstacles.size(), in.body.size(), path.poses.size() - std::min<std::size_t>(path.poses.size(), 1),
+              rep.valid ? "valid" : "INVALID", rep.dense_min, rep.dense_spacing, rep.certificate_queries, ms);
+  if (rep.escape)
+    std::printf("oracle: escape from contact, %zu exempt pairs, other pairs' dense min %.6g\n", rep.exempt_pairs,
+                rep.escape_dense_min);
+  EXPECT_TRUE(rep.valid) << "the oracle refuses the path: " << rep.why;
+
+  const double slack = 1e-9;
+  auto expect_within = [&](double m, double dense_min, const char* what) {
+    EXPECT_GE(m, dense_min - rep.dense_spacing / 2 - slack)
+        << what << " " << m << " is below the oracle's dense minimum " << dense_min << " − spacing/2";
+    EXPECT_LE(m, dense_min + rep.max_segment_length / 32 + slack)
+        << what << " " << m << " is more than (longest segment)/32 above the oracle's dense minimum " << dense_min;
+  };
+  if (figures.min_clearance) expect_within(*figures.min_clearance, rep.dense_min, "min_clearance");
+  if (figures.escape_segments) {
+    EXPECT_EQ(*figures.escape_segments, rep.escape ? 1u : 0u) << "escape segments";
+  }
+  if (rep.escape) {
+    if (figures.exempt_pairs) {
+      EXPECT_EQ(*figures.exempt_pairs, rep.exempt_pairs) << "exempt pairs";
+    }
+    if (figures.escape_clearance) expect_within(*figures.escape_clearance, rep.escape_dense_min, "escape_clearance");
+  } else if (figures.escape_clearance) {
+    EXPECT_TRUE(std::isinf(*figures.escape_clearance)) << "escape_clearance without an escape";
+  }
+  return rep;
+}
+
+/// check_path_independently with every figure the planner reported.
+inline oracle::PathCheckReport check_independently(const PlanScene& s, const Problem& problem, const PlanResult& r) {
+  return check_path_independently(s, problem, r.path,
+                                  {.min_clearance = r.min_clearance,
+                                   .escape_segments = r.escape_segments,
+                                   .exempt_pairs = r.exempt_pairs,
+                                   .escape_clearance = r.escape_clearance});
 }
 
 }  // namespace swept::test
