@@ -6,11 +6,14 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 namespace swept {
@@ -20,71 +23,168 @@ namespace fs = std::filesystem;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
+// A rotation from components of any magnitude: scaled by the largest component first, so that
+// huge components do not overflow the norm to infinity (which normalises to zero and reads as
+// the identity) and tiny ones do not underflow it. nullopt for all zero.
+std::optional<Quat> unit_quaternion(double x, double y, double z, double w) {
+  const double big = std::max({std::abs(x), std::abs(y), std::abs(z), std::abs(w)});
+  if (!(big > 0.0)) return std::nullopt;
+  Quat q(w / big, x / big, y / big, z / big);
+  q.normalize();
+  return q;
+}
+
+std::optional<Vec3> unit_axis(const Vec3& axis) {
+  const double big = axis.cwiseAbs().maxCoeff();
+  if (!(big > 0.0)) return std::nullopt;
+  return Vec3((axis / big).normalized());
+}
+
+// Reads our TOML problem strictly: every table's keys are checked against the keys it may hold,
+// every value's type and range is checked, and the first problem becomes the error, naming the
+// file, the line and column, and the key ("p.toml:12:1: planner.clearence: unknown key ...").
 struct TomlReader {
   std::string file;
   std::string error;  // the first error met
 
-  bool fail(const std::string& key, const std::string& what) {
-    if (error.empty()) error = file + ": " + key + ": " + what;
-    return false;
+  static std::string at(const toml::source_region& where) {
+    if (where.begin.line == 0) return {};
+    return ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
   }
 
-  bool number(const toml::node* n, const std::string& key, double& out) {
-    if (!n) return true;  // absent: keep the default
-    if (auto v = n->value<double>()) {
-      if (!std::isfinite(*v)) return fail(key, "must be a finite number");
-      out = *v;
-      return true;
+  bool fail(const toml::source_region& where, const std::string& key, const std::string& what) {
+    if (error.empty()) error = file + at(where) + ": " + key + ": " + what;
+    return false;
+  }
+  bool fail(const toml::node& n, const std::string& key, const std::string& what) { return fail(n.source(), key, what); }
+  /// fail() as the Error to return.
+  Error err(const toml::source_region& where, const std::string& key, const std::string& what) {
+    fail(where, key, what);
+    return Error{error};
+  }
+  Error err(const toml::node& n, const std::string& key, const std::string& what) { return err(n.source(), key, what); }
+
+  /// Every key of `t` must be one of `known`.
+  bool keys(const toml::table& t, const std::string& prefix, std::initializer_list<std::string_view> known) {
+    for (auto&& [k, v] : t) {
+      if (std::find(known.begin(), known.end(), k.str()) != known.end()) continue;
+      std::string list;
+      for (std::string_view name : known) list += (list.empty() ? "" : ", ") + std::string(name);
+      return fail(k.source(), prefix + std::string(k.str()), "unknown key (known here: " + list + ")");
     }
-    return fail(key, "must be a number");
+    return true;
+  }
+
+  /// A finite number (integer or float) at least `lo` (or above it when `lo_open`); absent: keep `out`.
+  bool number(const toml::node* n, const std::string& key, double& out, double lo = -INFINITY, bool lo_open = false) {
+    if (!n) return true;
+    double v;
+    if (auto i = n->as_integer()) v = static_cast<double>(i->get());
+    else if (auto f = n->as_floating_point()) v = f->get();
+    else return fail(*n, key, "must be a number");
+    if (!std::isfinite(v)) return fail(*n, key, "must be a finite number");
+    if (lo_open ? !(v > lo) : !(v >= lo))
+      return fail(*n, key, std::string("must be ") + (lo_open ? "> " : "≥ ") + format(lo) + ", got " + format(v));
+    out = v;
+    return true;
+  }
+
+  bool integer(const toml::node* n, const std::string& key, int& out, int lo, int hi) {
+    if (!n) return true;
+    const auto* i = n->as_integer();
+    if (!i) return fail(*n, key, "must be a whole number");
+    if (i->get() < lo || i->get() > hi)
+      return fail(*n, key, "must be from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " +
+                               std::to_string(i->get()));
+    out = static_cast<int>(i->get());
+    return true;
+  }
+
+  bool string(const toml::node* n, const std::string& key, std::string& out) {
+    if (!n) return true;
+    const auto* v = n->as_string();
+    if (!v) return fail(*n, key, "must be a string");
+    out = v->get();
+    return true;
+  }
+
+  bool boolean(const toml::node* n, const std::string& key, bool& out) {
+    if (!n) return true;
+    const auto* v = n->as_boolean();
+    if (!v) return fail(*n, key, "must be true or false");
+    out = v->get();
+    return true;
+  }
+
+  bool unit(const toml::node* n, const std::string& key, std::string& out) {
+    if (!string(n, key, out)) return false;
+    double metres;
+    if (n && !unit_scale(out, metres)) return fail(*n, key, "unknown unit '" + out + "' (m, cm, mm, um, in, ft)");
+    return true;
+  }
+
+  /// A table, or an error naming what it must be.
+  const toml::table* table(const toml::node* n, const std::string& key, const std::string& what) {
+    if (!n) return nullptr;
+    const toml::table* t = n->as_table();
+    if (!t) fail(*n, key, "must be " + what);
+    return t;
+  }
+
+  bool numbers(const toml::node* n, const std::string& key, double* out, std::size_t count, const std::string& what) {
+    if (!n) return true;
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != count) return fail(*n, key, "must be " + what);
+    for (std::size_t i = 0; i < count; ++i)
+      if (!number(a->get(i), key + "[" + std::to_string(i) + "]", out[i])) return false;
+    return true;
   }
 
   bool vec3(const toml::node* n, const std::string& key, Vec3& out) {
-    if (!n) return true;
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 3) return fail(key, "must be an array of 3 numbers");
-    for (std::size_t i = 0; i < 3; ++i) {
-      auto v = (*a)[i].value<double>();
-      if (!v || !std::isfinite(*v)) return fail(key, "must be an array of 3 finite numbers");
-      out[static_cast<Eigen::Index>(i)] = *v;
+    double v[3] = {out.x(), out.y(), out.z()};
+    if (!numbers(n, key, v, 3, "an array of 3 numbers [x, y, z]")) return false;
+    out = Vec3(v[0], v[1], v[2]);
+    return true;
+  }
+
+  /// The pose keys of `t` (translation, quaternion or axis + angle_deg); other keys are the caller's.
+  bool pose_keys(const toml::table& t, const std::string& key, Pose& out) {
+    out = Pose{};
+    if (!vec3(t.get("translation"), key + ".translation", out.translation)) return false;
+    const toml::node* q = t.get("quaternion");
+    const toml::node* axis = t.get("axis");
+    const toml::node* angle = t.get("angle_deg");
+    if (q && (axis || angle)) return fail(*q, key, "give either quaternion or axis + angle_deg, not both");
+    if (q) {
+      double c[4];
+      if (!numbers(q, key + ".quaternion", c, 4, "[x, y, z, w]")) return false;
+      const auto unit = unit_quaternion(c[0], c[1], c[2], c[3]);
+      if (!unit) return fail(*q, key + ".quaternion", "must not be zero");
+      out.rotation = unit->toRotationMatrix();
+    } else if (axis || angle) {
+      if (!axis) return fail(*angle, key, "angle_deg needs axis = [x, y, z]");
+      if (!angle) return fail(*axis, key, "axis needs angle_deg");
+      Vec3 a = Vec3::Zero();
+      double deg = 0.0;
+      if (!vec3(axis, key + ".axis", a) || !number(angle, key + ".angle_deg", deg)) return false;
+      const auto unit = unit_axis(a);
+      if (!unit) return fail(*axis, key + ".axis", "must not be zero");
+      out.rotation = Eigen::AngleAxisd(deg * kDeg, *unit).toRotationMatrix();
     }
     return true;
   }
 
   bool pose(const toml::node* n, const std::string& key, Pose& out) {
     out = Pose{};
-    if (!n) return true;
-    const toml::table* t = n->as_table();
-    if (!t) return fail(key, "must be a table with translation and quaternion or axis + angle_deg");
-    for (auto&& [k, v] : *t) {
-      const std::string name(k.str());
-      if (name != "translation" && name != "quaternion" && name != "axis" && name != "angle_deg")
-        return fail(key + "." + name, "unknown key (translation, quaternion, axis, angle_deg)");
-    }
-    if (!vec3(t->get("translation"), key + ".translation", out.translation)) return false;
-    if (const toml::node* q = t->get("quaternion")) {
-      const toml::array* a = q->as_array();
-      if (!a || a->size() != 4) return fail(key + ".quaternion", "must be [x, y, z, w]");
-      double c[4];
-      for (std::size_t i = 0; i < 4; ++i) {
-        auto v = (*a)[i].value<double>();
-        if (!v || !std::isfinite(*v)) return fail(key + ".quaternion", "must be 4 finite numbers [x, y, z, w]");
-        c[i] = *v;
-      }
-      Quat quat(c[3], c[0], c[1], c[2]);
-      if (quat.norm() < 1e-12) return fail(key + ".quaternion", "must not be zero");
-      if (t->get("axis") || t->get("angle_deg"))
-        return fail(key, "give either quaternion or axis + angle_deg, not both");
-      out.rotation = quat.normalized().toRotationMatrix();
-    } else if (t->get("axis") || t->get("angle_deg")) {
-      Vec3 axis = Vec3::UnitZ();
-      double angle = 0.0;
-      if (!vec3(t->get("axis"), key + ".axis", axis) || !number(t->get("angle_deg"), key + ".angle_deg", angle))
-        return false;
-      if (axis.norm() < 1e-12) return fail(key + ".axis", "must not be zero");
-      out.rotation = Eigen::AngleAxisd(angle * kDeg, axis.normalized()).toRotationMatrix();
-    }
-    return true;
+    const toml::table* t = table(n, key, "a table with translation and quaternion or axis + angle_deg");
+    if (!t) return n == nullptr;
+    return keys(*t, key + ".", {"translation", "quaternion", "axis", "angle_deg"}) && pose_keys(*t, key, out);
+  }
+
+  static std::string format(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
   }
 };
 
@@ -107,185 +207,227 @@ Result<Problem> load_toml(const fs::path& file) {
   TomlReader r{file.string(), {}};
   Problem p;
   p.source = file;
-  static const char* known[] = {"unit", "obstacle", "body", "body_frame", "start", "goal",
-                                "bounds", "rotation", "planner"};
-  for (auto&& [k, v] : root) {
-    const std::string name(k.str());
-    if (std::find_if(std::begin(known), std::end(known), [&](const char* s) { return name == s; }) == std::end(known))
-      return Error{file.string() + ": unknown key '" + name + "'"};
+  auto failed = [&] { return Error{r.error}; };
+  if (!r.keys(root, "", {"unit", "obstacle", "body", "body_frame", "start", "goal", "bounds", "rotation", "planner"}))
+    return failed();
+  if (!r.unit(root.get("unit"), "unit", p.unit)) return failed();
+
+  // [planner] first: its deflection is the default of the meshes'.
+  if (const toml::node* n = root.get("planner")) {
+    const toml::table* pl = r.table(n, "planner", "a table [planner]");
+    if (!pl || !r.keys(*pl, "planner.", {"clearance", "contact_tolerance", "fitter", "time_limit", "deflection", "threads"}) ||
+        !r.number(pl->get("clearance"), "planner.clearance", p.clearance, 0.0) ||
+        !r.number(pl->get("contact_tolerance"), "planner.contact_tolerance", p.contact_tolerance, 0.0) ||
+        !r.number(pl->get("time_limit"), "planner.time_limit", p.time_limit, 0.0, true) ||
+        !r.number(pl->get("deflection"), "planner.deflection", p.deflection, 0.0, true) ||
+        !r.integer(pl->get("threads"), "planner.threads", p.threads, 0, std::numeric_limits<int>::max()))
+      return failed();
+    if (const toml::node* f = pl->get("fitter")) {
+      std::string fitter;
+      if (!r.string(f, "planner.fitter", fitter)) return failed();
+      if (!parse_fitter(fitter, p.fitter)) return r.err(*f, "planner.fitter", "unknown fitter '" + fitter + "' (pqp, rapid2, inertia)");
+    }
   }
-  if (auto u = root["unit"].value<std::string>()) p.unit = *u;
-  double metres;
-  if (!unit_scale(p.unit, metres)) return Error{file.string() + ": unit: unknown unit '" + p.unit + "' (m, cm, mm, um, in, ft)"};
 
   auto meshes = [&](const char* key, std::vector<MeshRef>& out) -> bool {
-    const toml::array* arr = root[key].as_array();
-    if (!arr) return r.fail(key, "missing: give at least one [[" + std::string(key) + "]] with a file");
+    const toml::node* n = root.get(key);
+    if (!n) return r.fail(toml::source_region{}, key, "missing: give at least one [[" + std::string(key) + "]] with a file");
+    const toml::array* arr = n->as_array();
+    if (!arr) return r.fail(*n, key, "must be an array of tables: write [[" + std::string(key) + "]]");
     for (std::size_t i = 0; i < arr->size(); ++i) {
       const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
-      const toml::table* t = (*arr)[i].as_table();
-      if (!t) return r.fail(where, "must be a table");
+      const toml::table* t = r.table(arr->get(i), where, "a table with file (and file_unit, deflection, pose)");
+      if (!t || !r.keys(*t, where + ".", {"file", "file_unit", "deflection", "pose"})) return false;
       MeshRef m;
-      auto f = (*t)["file"].value<std::string>();
-      if (!f) return r.fail(where + ".file", "missing");
-      m.file = resolve(file, *f);
-      if (!fs::exists(m.file)) return r.fail(where + ".file", "no such file: " + m.file.string());
-      if (auto fu = (*t)["file_unit"].value<std::string>()) m.file_unit = *fu;
-      if (!r.number(t->get("deflection"), where + ".deflection", m.deflection)) return false;
+      const toml::node* f = t->get("file");
+      if (!f) return r.fail(t->source(), where + ".file", "missing");
+      std::string name;
+      if (!r.string(f, where + ".file", name)) return false;
+      if (name.empty()) return r.fail(*f, where + ".file", "must not be empty");
+      m.file = resolve(file, name);
+      std::error_code ec;
+      if (!fs::is_regular_file(m.file, ec))
+        return r.fail(*f, where + ".file", (fs::exists(m.file, ec) ? "not a file: " : "no such file: ") + m.file.string());
+      if (!r.unit(t->get("file_unit"), where + ".file_unit", m.file_unit)) return false;
+      m.deflection = p.deflection;
+      if (!r.number(t->get("deflection"), where + ".deflection", m.deflection, 0.0, true)) return false;
       if (!r.pose(t->get("pose"), where + ".pose", m.pose)) return false;
       out.push_back(std::move(m));
     }
-    if (out.empty()) return r.fail(key, "needs at least one mesh");
+    if (out.empty()) return r.fail(*n, key, "needs at least one mesh");
     return true;
   };
-  if (!meshes("obstacle", p.obstacles) || !meshes("body", p.body)) return Error{r.error};
+  if (!meshes("obstacle", p.obstacles) || !meshes("body", p.body)) return failed();
 
-  if (const toml::table* bf = root["body_frame"].as_table()) {
-    if (bf->get("reference_point")) {
-      Vec3 c;
-      if (!r.vec3(bf->get("reference_point"), "body_frame.reference_point", c)) return Error{r.error};
-      p.reference_point = c;
+  if (const toml::node* n = root.get("body_frame")) {
+    const toml::table* bf = r.table(n, "body_frame", "a table [body_frame]");
+    if (!bf || !r.keys(*bf, "body_frame.", {"reference_point"})) return failed();
+    if (const toml::node* c = bf->get("reference_point")) {
+      Vec3 point = Vec3::Zero();
+      if (!r.vec3(c, "body_frame.reference_point", point)) return failed();
+      p.reference_point = point;
     }
   }
-  if (!root["start"].as_table()) return Error{file.string() + ": start: missing [start] pose"};
-  if (!r.pose(root.get("start"), "start", p.start)) return Error{r.error};
-  const toml::table* goal = root["goal"].as_table();
-  if (!goal) return Error{file.string() + ": goal: missing [goal] (a pose, or outside = true)"};
-  if (goal->get("outside")) {
-    auto o = (*goal)["outside"].value<bool>();
-    if (!o) return Error{file.string() + ": goal.outside: must be true or false"};
-    p.goal_outside = *o;
-    if (!r.number(goal->get("margin"), "goal.margin", p.goal_margin)) return Error{r.error};
-    if (p.goal_margin < 0) return Error{file.string() + ": goal.margin: must be ≥ 0"};
-  }
-  if (!p.goal_outside) {
+
+  if (!root.get("start")) return Error{file.string() + ": start: missing [start] pose"};
+  if (!r.pose(root.get("start"), "start", p.start)) return failed();
+
+  const toml::node* goal_node = root.get("goal");
+  if (!goal_node) return Error{file.string() + ": goal: missing [goal] (a pose, or outside = true)"};
+  const toml::table* goal = r.table(goal_node, "goal", "a table [goal]: a pose, or outside = true");
+  if (!goal || !r.keys(*goal, "goal.", {"translation", "quaternion", "axis", "angle_deg", "outside", "margin"}) ||
+      !r.boolean(goal->get("outside"), "goal.outside", p.goal_outside))
+    return failed();
+  if (p.goal_outside) {
+    if (!r.number(goal->get("margin"), "goal.margin", p.goal_margin, 0.0)) return failed();
+    for (const char* k : {"translation", "quaternion", "axis", "angle_deg"})
+      if (const toml::node* n = goal->get(k))
+        return r.err(*n, std::string("goal.") + k, "give either a goal pose or outside = true, not both");
+  } else {
+    if (const toml::node* m = goal->get("margin"))
+      return r.err(*m, "goal.margin", "only used with outside = true");
+    if (!goal->get("translation"))
+      return r.err(goal->source(), "goal", "give translation (+ rotation) or outside = true");
     Pose g;
-    TomlReader gr{file.string(), {}};
-    toml::table pose_only;
-    for (auto&& [k, v] : *goal)
-      if (k.str() != "outside" && k.str() != "margin") pose_only.insert(k, v);
-    if (!gr.pose(&pose_only, "goal", g)) return Error{gr.error};
-    if (!goal->get("translation")) return Error{file.string() + ": goal: give translation (+ rotation) or outside = true"};
+    if (!r.pose_keys(*goal, "goal", g)) return failed();
     p.goal = g;
   }
-  if (const toml::table* b = root["bounds"].as_table()) {
+
+  if (const toml::node* n = root.get("bounds")) {
+    const toml::table* b = r.table(n, "bounds", "a table [bounds] with min and max");
+    if (!b || !r.keys(*b, "bounds.", {"min", "max"})) return failed();
+    if (!b->get("min") || !b->get("max")) return r.err(b->source(), "bounds", "give both min and max");
     Aabb box;
-    if (!b->get("min") || !b->get("max")) return Error{file.string() + ": bounds: give both min and max"};
-    if (!r.vec3(b->get("min"), "bounds.min", box.min) || !r.vec3(b->get("max"), "bounds.max", box.max))
-      return Error{r.error};
-    if ((box.min.array() >= box.max.array()).any()) return Error{file.string() + ": bounds: min must be below max on every axis"};
+    if (!r.vec3(b->get("min"), "bounds.min", box.min) || !r.vec3(b->get("max"), "bounds.max", box.max)) return failed();
+    if ((box.min.array() >= box.max.array()).any())
+      return r.err(b->source(), "bounds", "min must be below max on every axis");
     p.bounds = box;
   }
-  if (const toml::table* rot = root["rotation"].as_table()) {
-    const std::string mode = (*rot)["mode"].value_or(std::string("free"));
+
+  if (const toml::node* n = root.get("rotation")) {
+    const toml::table* rot = r.table(n, "rotation", "a table [rotation]");
+    if (!rot || !r.keys(*rot, "rotation.", {"mode", "limits_deg"})) return failed();
+    std::string mode = "free";
+    if (!r.string(rot->get("mode"), "rotation.mode", mode)) return failed();
     if (mode == "none") p.rotation = RotationMode::none;
     else if (mode == "free") p.rotation = RotationMode::free;
     else if (mode == "limits") p.rotation = RotationMode::limits;
-    else return Error{file.string() + ": rotation.mode: '" + mode + "' (none, free or limits)"};
+    else return r.err(*rot->get("mode"), "rotation.mode", "unknown mode '" + mode + "' (none, free or limits)");
+    const toml::node* lim_node = rot->get("limits_deg");
+    if (p.rotation != RotationMode::limits && lim_node)
+      return r.err(*lim_node, "rotation.limits_deg", "only used with mode = \"limits\"");
     if (p.rotation == RotationMode::limits) {
-      const toml::array* lim = (*rot)["limits_deg"].as_array();
-      if (!lim || lim->size() != 3) return Error{file.string() + ": rotation.limits_deg: give [[lo, hi], [lo, hi], [lo, hi]] in degrees"};
+      const std::string what = "[[lo, hi], [lo, hi], [lo, hi]] in degrees (roll, pitch, yaw)";
+      if (!lim_node) return r.err(rot->source(), "rotation.limits_deg", "missing: give " + what);
+      const toml::array* lim = lim_node->as_array();
+      if (!lim || lim->size() != 3) return r.err(*lim_node, "rotation.limits_deg", "must be " + what);
       for (std::size_t i = 0; i < 3; ++i) {
-        const toml::array* pair = (*lim)[i].as_array();
-        if (!pair || pair->size() != 2) return Error{file.string() + ": rotation.limits_deg: each entry is [lo, hi]"};
-        for (std::size_t j = 0; j < 2; ++j) {
-          auto v = (*pair)[j].value<double>();
-          if (!v || !std::isfinite(*v)) return Error{file.string() + ": rotation.limits_deg: numbers in degrees"};
-          p.rotation_limits[i][j] = *v * kDeg;
-        }
-        if (p.rotation_limits[i][0] > 0 || p.rotation_limits[i][1] < 0 || p.rotation_limits[i][0] >= p.rotation_limits[i][1])
-          return Error{file.string() + ": rotation.limits_deg: each range must contain 0 (the start orientation) and lo < hi"};
+        const std::string key = "rotation.limits_deg[" + std::to_string(i) + "]";
+        double range[2];
+        if (!r.numbers(lim->get(i), key, range, 2, "[lo, hi] in degrees")) return failed();
+        if (range[0] > 0 || range[1] < 0 || range[0] >= range[1])
+          return r.err(*lim->get(i), key, "the range must contain 0 (the start orientation) and lo < hi");
+        p.rotation_limits[i] = {range[0] * kDeg, range[1] * kDeg};
       }
     }
   }
-  if (const toml::table* pl = root["planner"].as_table()) {
-    if (!r.number(pl->get("clearance"), "planner.clearance", p.clearance) ||
-        !r.number(pl->get("contact_tolerance"), "planner.contact_tolerance", p.contact_tolerance) ||
-        !r.number(pl->get("time_limit"), "planner.time_limit", p.time_limit) ||
-        !r.number(pl->get("deflection"), "planner.deflection", p.deflection))
-      return Error{r.error};
-    if (auto f = (*pl)["fitter"].value<std::string>())
-      if (!parse_fitter(*f, p.fitter)) return Error{file.string() + ": planner.fitter: '" + *f + "' (pqp, rapid2, inertia)"};
-    if (auto t = (*pl)["threads"].value<int64_t>()) p.threads = static_cast<int>(*t);
-    if (p.clearance < 0 || p.contact_tolerance < 0) return Error{file.string() + ": planner: clearance and contact_tolerance must be ≥ 0"};
-    if (p.time_limit <= 0) return Error{file.string() + ": planner.time_limit: must be > 0 seconds"};
-    if (p.threads < 0) return Error{file.string() + ": planner.threads: must be ≥ 0"};
-    if (p.deflection <= 0) return Error{file.string() + ": planner.deflection: must be > 0"};
-  }
-  for (auto* list : {&p.obstacles, &p.body})
-    for (MeshRef& m : *list)
-      if (m.deflection <= 0) m.deflection = p.deflection;
   return p;
 }
 
 // OMPL.app's .cfg: an INI file with a [problem] section (robot, world, start.*, goal.*,
-// volume.*); angles in radians about an axis.
+// volume.*); angles in radians about an axis. OMPL.app reads it with boost::program_options,
+// which rejects a key given twice and ignores keys it does not know; so do we.
 Result<Problem> load_cfg(const fs::path& file) {
   std::ifstream in(file);
   if (!in) return Error{file.string() + ": cannot open"};
+  const std::string name = file.string();
+  auto at = [&](int line) { return name + ":" + std::to_string(line) + ": "; };
   std::map<std::string, std::pair<std::string, int>> kv;  // key → (value, line)
   std::string line, section;
   int lineno = 0;
+  auto trim = [](std::string s) {
+    const auto b = s.find_first_not_of(" \t\r"), e = s.find_last_not_of(" \t\r");
+    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+  };
   while (std::getline(in, line)) {
     ++lineno;
     auto hash = line.find_first_of("#;");
     if (hash != std::string::npos) line.erase(hash);
-    auto trim = [](std::string s) {
-      const auto b = s.find_first_not_of(" \t\r"), e = s.find_last_not_of(" \t\r");
-      return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-    };
     line = trim(line);
     if (line.empty()) continue;
     if (line.front() == '[') {
-      if (line.back() != ']') return Error{file.string() + ":" + std::to_string(lineno) + ": malformed section header"};
+      if (line.back() != ']') return Error{at(lineno) + "malformed section header"};
       section = trim(line.substr(1, line.size() - 2));
       continue;
     }
     const auto eq = line.find('=');
-    if (eq == std::string::npos)
-      return Error{file.string() + ":" + std::to_string(lineno) + ": expected 'key = value', got '" + line + "'"};
-    if (section == "problem") kv[trim(line.substr(0, eq))] = {trim(line.substr(eq + 1)), lineno};
+    if (eq == std::string::npos) return Error{at(lineno) + "expected 'key = value', got '" + line + "'"};
+    if (section != "problem") continue;
+    const std::string key = trim(line.substr(0, eq));
+    const auto [it, fresh] = kv.try_emplace(key, trim(line.substr(eq + 1)), lineno);
+    if (!fresh)
+      return Error{at(lineno) + key + ": given twice (first on line " + std::to_string(it->second.second) + ")"};
   }
-  if (kv.empty()) return Error{file.string() + ": no [problem] section with keys (robot, world, start.*, goal.*)"};
+  if (kv.empty()) return Error{name + ": no [problem] section with keys (robot, world, start.*, goal.*)"};
   std::string error;
+  // Reads a number; absent and not required: keeps `out`, returns false.
   auto num = [&](const std::string& key, double& out, bool required) {
     auto it = kv.find(key);
     if (it == kv.end()) {
-      if (required && error.empty()) error = file.string() + ": missing " + key;
-      return;
+      if (required && error.empty()) error = name + ": " + key + ": missing";
+      return false;
     }
+    const std::string& text = it->second.first;
     char* end = nullptr;
-    const double v = std::strtod(it->second.first.c_str(), &end);
-    if (end == it->second.first.c_str() || *end != '\0' || !std::isfinite(v)) {
-      if (error.empty())
-        error = file.string() + ":" + std::to_string(it->second.second) + ": " + key + ": not a number: '" + it->second.first + "'";
-      return;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0') {
+      if (error.empty()) error = at(it->second.second) + key + ": not a number: '" + text + "'";
+      return false;
+    }
+    if (!std::isfinite(v)) {
+      if (error.empty()) error = at(it->second.second) + key + ": must be a finite number, got '" + text + "'";
+      return false;
     }
     out = v;
+    return true;
   };
   auto pose = [&](const std::string& prefix) {
-    Vec3 t = Vec3::Zero(), axis = Vec3::UnitZ();
+    Vec3 t = Vec3::Zero(), axis = Vec3::Zero();
     double theta = 0.0;
     num(prefix + ".x", t.x(), true);
     num(prefix + ".y", t.y(), true);
     num(prefix + ".z", t.z(), true);
     num(prefix + ".theta", theta, false);
-    num(prefix + ".axis.x", axis.x(), false);
-    num(prefix + ".axis.y", axis.y(), false);
-    num(prefix + ".axis.z", axis.z(), false);
-    if (axis.norm() < 1e-12) axis = Vec3::UnitZ();
-    return Pose::from_axis_angle(axis, theta, t);
+    bool has_axis = false;
+    for (int i = 0; i < 3; ++i)
+      has_axis = num(prefix + ".axis." + "xyz"[i], axis[i], false) || has_axis;
+    // OMPL's setAxisAngle() turns an axis shorter than 1e-9 into the identity whatever the
+    // angle; a non-zero angle about no axis is a mistake in the file, not a rotation.
+    if (!error.empty() || theta == 0.0) return Pose::from_translation(t);
+    const double big = axis.cwiseAbs().maxCoeff();
+    const auto unit = unit_axis(axis);
+    if (!unit || big * (axis / big).norm() < 1e-9) {
+      const int where = kv.at(prefix + ".theta").second;
+      error = at(where) + prefix + ".theta: a rotation of " + TomlReader::format(theta) + " rad needs a non-zero " +
+              prefix + ".axis.x/y/z" +
+              (has_axis ? " (the axis given is shorter than 1e-9)" : " (none given)");
+      return Pose::from_translation(t);
+    }
+    return Pose{Eigen::AngleAxisd(theta, *unit).toRotationMatrix(), t};
   };
   Problem p;
   p.source = file;
   p.unit = "mm";
   for (const char* key : {"robot", "world"}) {
     auto it = kv.find(key);
-    if (it == kv.end()) return Error{file.string() + ": missing " + std::string(key) + " = MESH"};
+    if (it == kv.end()) return Error{name + ": " + key + ": missing (" + key + " = MESH)"};
+    if (it->second.first.empty()) return Error{at(it->second.second) + key + ": no mesh file given"};
     MeshRef m;
     m.file = resolve(file, it->second.first);
-    if (!fs::exists(m.file))
-      return Error{file.string() + ":" + std::to_string(it->second.second) + ": " + key + ": no such file: " + m.file.string()};
+    std::error_code ec;
+    if (!fs::is_regular_file(m.file, ec))
+      return Error{at(it->second.second) + key + ": " + (fs::exists(m.file, ec) ? "not a file: " : "no such file: ") +
+                   m.file.string()};
     m.file_unit = "mm";  // OMPL.app is unit-less: keep the numbers as they are
     m.center_on_vertex_mean = std::string(key) == "robot";
     m.deflection = p.deflection;
@@ -294,20 +436,20 @@ Result<Problem> load_cfg(const fs::path& file) {
   p.start = pose("start");
   p.goal = pose("goal");
   p.reference_point = Vec3::Zero();  // the robot's frame origin: its vertex mean
-  Aabb box;
   bool any = false;
-  for (const char* axis : {"x", "y", "z"}) any = any || kv.count(std::string("volume.min.") + axis);
+  for (const char* axis : {"x", "y", "z"})
+    any = any || kv.count(std::string("volume.min.") + axis) || kv.count(std::string("volume.max.") + axis);
   if (any) {
-    const char* names[3] = {"x", "y", "z"};
+    Aabb box;
     for (int i = 0; i < 3; ++i) {
-      num(std::string("volume.min.") + names[i], box.min[i], true);
-      num(std::string("volume.max.") + names[i], box.max[i], true);
+      num(std::string("volume.min.") + "xyz"[i], box.min[i], true);
+      num(std::string("volume.max.") + "xyz"[i], box.max[i], true);
     }
     p.bounds = box;
   }
   if (!error.empty()) return Error{error};
   if (p.bounds && (p.bounds->min.array() >= p.bounds->max.array()).any())
-    return Error{file.string() + ": volume.min must be below volume.max on every axis"};
+    return Error{name + ": volume.min must be below volume.max on every axis"};
   return p;
 }
 
@@ -356,23 +498,37 @@ Result<Path> read_path(const fs::path& file) {
     while (std::getline(in, line)) {
       ++lineno;
       if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      const std::string at = file.string() + ":" + std::to_string(lineno) + ": ";
       std::istringstream ls(line);
       double v[7];
+      std::string extra;
       for (double& x : v)
-        if (!(ls >> x) || !std::isfinite(x)) return Error{file.string() + ":" + std::to_string(lineno) + ": expected 'x y z qx qy qz qw'"};
-      Quat q(v[6], v[3], v[4], v[5]);
-      if (q.norm() < 1e-12) return Error{file.string() + ":" + std::to_string(lineno) + ": zero quaternion"};
-      path.poses.push_back(Pose::from_quaternion(q, Vec3(v[0], v[1], v[2])));
+        if (!(ls >> x)) return Error{at + "expected 7 numbers 'x y z qx qy qz qw'"};
+      if (ls >> extra) return Error{at + "expected 7 numbers 'x y z qx qy qz qw', found more"};
+      for (double x : v)
+        if (!std::isfinite(x)) return Error{at + "non-finite number"};
+      const auto q = unit_quaternion(v[3], v[4], v[5], v[6]);
+      if (!q) return Error{at + "zero quaternion"};
+      path.poses.push_back(Pose{q->toRotationMatrix(), Vec3(v[0], v[1], v[2])});
     }
   } else {
     try {
       const nlohmann::json doc = nlohmann::json::parse(in);
+      std::size_t i = 0;
       for (const auto& p : doc.at("poses")) {
+        const std::string at = file.string() + ": poses[" + std::to_string(i++) + "]: ";
         const auto& t = p.at("translation");
         const auto& q = p.at("quaternion");
-        Quat quat(q.at(3).get<double>(), q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>());
-        if (quat.norm() < 1e-12) return Error{file.string() + ": zero quaternion"};
-        path.poses.push_back(Pose::from_quaternion(quat, Vec3(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>())));
+        if (!t.is_array() || t.size() != 3) return Error{at + "translation must be [x, y, z]"};
+        if (!q.is_array() || q.size() != 4) return Error{at + "quaternion must be [x, y, z, w]"};
+        double v[7];
+        for (std::size_t k = 0; k < 7; ++k) {
+          v[k] = (k < 3 ? t.at(k) : q.at(k - 3)).get<double>();
+          if (!std::isfinite(v[k])) return Error{at + "non-finite number"};
+        }
+        const auto unit = unit_quaternion(v[3], v[4], v[5], v[6]);
+        if (!unit) return Error{at + "zero quaternion"};
+        path.poses.push_back(Pose{unit->toRotationMatrix(), Vec3(v[0], v[1], v[2])});
       }
     } catch (const std::exception& e) {
       return Error{file.string() + ": malformed path JSON: " + e.what()};

@@ -3,8 +3,10 @@
 #include "plan/plan_support.h"
 #include "swept/io/mesh_io.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <unistd.h>
 
 namespace swept {
@@ -161,6 +163,192 @@ TEST_F(ProblemFiles, BadFilesGiveClearErrors) {
   auto s = load_scene(*p, p->fitter);
   ASSERT_TRUE(s);
   EXPECT_EQ(plan(*p, *s).status, PlanStatus::invalid_start);
+}
+
+// kGood with `line` inserted after the first line equal to `after`; `line_no` is set to the
+// 1-based line the insertion lands on.
+std::string with_line(const std::string& after, const std::string& line, int& line_no) {
+  std::string text = kGood;
+  const std::size_t at = text.find("\n" + after + "\n");
+  EXPECT_NE(at, std::string::npos) << after;
+  const std::size_t insert = at + after.size() + 2;
+  text.insert(insert, line + "\n");
+  line_no = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(insert), '\n'));
+  return text;
+}
+
+// docs/problem-format.md promises exit 1 for an unknown key: in every table, with its line.
+TEST_F(ProblemFiles, UnknownKeysAreErrorsNamingTheKeyAndLine) {
+  struct Case {
+    const char* after;
+    const char* line;
+    const char* key;
+  };
+  const Case cases[] = {
+      {"unit = \"mm\"", "colour = \"red\"", "colour"},
+      {"[planner]", "clearence = 19", "planner.clearence"},
+      {"[[obstacle]]", "pos = { translation = [0, 0, 10] }", "obstacle[0].pos"},
+      {"[[body]]", "scale = 2", "body[0].scale"},
+      {"[start]", "rotation = [0, 0, 0]", "start.rotation"},
+      {"[goal]", "tolerance = 1", "goal.tolerance"},
+      {"[rotation]", "limit = 3", "rotation.limit"},
+      {"[[obstacle]]", "pose = { translation = [0, 0, 0], angle = 5 }", "obstacle[0].pose.angle"},
+  };
+  for (const Case& c : cases) {
+    int line = 0;
+    const auto file = write("unknown.toml", with_line(c.after, c.line, line));
+    const auto p = load_problem(file);
+    expect_error(p, file.string() + ":" + std::to_string(line) + ":");
+    expect_error(p, std::string(c.key) + ": unknown key");
+  }
+  int line = 0;
+  const std::string frame = with_line("[goal]", "", line) + "[body_frame]\ncentre = [0, 0, 0]\n[bounds]\nmin = [-50, -50, -50]\nmax = [50, 50, 50]\n";
+  expect_error(load_problem(write("frame.toml", frame)), "body_frame.centre: unknown key");
+  std::string bounds = frame;
+  bounds.replace(bounds.find("centre"), 6, "reference_point");
+  bounds.replace(bounds.find("max ="), 3, "mx ");
+  expect_error(load_problem(write("bounds.toml", bounds)), "bounds.mx: unknown key");
+  bounds.replace(bounds.find("mx "), 3, "max");
+  auto good = load_problem(write("good.toml", bounds));
+  ASSERT_TRUE(good) << good.error().message;
+  EXPECT_TRUE(good->bounds);
+  EXPECT_TRUE(good->reference_point);
+}
+
+// Every value is type- and range-checked; none silently becomes a default.
+TEST_F(ProblemFiles, WrongTypesAndRangesAreErrorsNamingTheKeyAndLine) {
+  struct Case {
+    const char* at;    // a line of kGood: replaced by `line` if it starts with the same key, else followed by it
+    const char* line;
+    const char* needle;
+    int line_offset = 0;  // the error's line relative to `line` (when another key is the culprit)
+  };
+  const Case cases[] = {
+      {"fitter = \"pqp\"", "fitter = 5", "planner.fitter: must be a string"},
+      {"fitter = \"pqp\"", "fitter = \"best\"", "planner.fitter: unknown fitter 'best'"},
+      {"threads = 1", "threads = 1.5", "planner.threads: must be a whole number"},
+      {"threads = 1", "threads = 4294967297", "planner.threads: must be from 0 to 2147483647, got 4294967297"},
+      {"threads = 1", "threads = -1", "planner.threads: must be from 0"},
+      {"clearance = 0.002", "clearance = \"1\"", "planner.clearance: must be a number"},
+      {"clearance = 0.002", "clearance = nan", "planner.clearance: must be a finite number"},
+      {"clearance = 0.002", "clearance = -0.5", "planner.clearance: must be ≥ 0"},
+      {"time_limit = 30", "time_limit = 0", "planner.time_limit: must be > 0"},
+      {"[planner]", "deflection = -inf", "planner.deflection: must be a finite number"},
+      {"[[obstacle]]", "deflection = -1", "obstacle[0].deflection: must be > 0, got -1"},
+      {"[[obstacle]]", "deflection = 0", "obstacle[0].deflection: must be > 0"},
+      {"[[obstacle]]", "file_unit = 1000", "obstacle[0].file_unit: must be a string"},
+      {"[[obstacle]]", "file_unit = \"yard\"", "obstacle[0].file_unit: unknown unit 'yard'"},
+      {"file = \"peg.stl\"", "file = 3", "body[0].file: must be a string"},
+      {"mode = \"limits\"", "mode = 1", "rotation.mode: must be a string"},
+      {"outside = true", "outside = \"yes\"", "goal.outside: must be true or false"},
+      {"outside = true", "outside = false", "goal.margin: only used with outside = true", 1},
+      {"[goal]", "translation = [0, 0, 50]", "goal.translation: give either a goal pose or outside = true"},
+      {"[start]", "axis = [0, 0, 1]", "start: give either quaternion or axis + angle_deg", 2},
+      {"unit = \"mm\"", "unit = 5", "unit: must be a string"},
+      {"margin = 1.0", "margin = inf", "goal.margin: must be a finite number"},
+      {"mode = \"limits\"", "mode = \"free\"", "rotation.limits_deg: only used with mode = \"limits\"", 1},
+      {"translation = [0, 0, -7.49]", "translation = [0, nan, -7.49]", "start.translation[1]: must be a finite number"},
+  };
+  for (const Case& c : cases) {
+    const std::string at = c.at, line = c.line;
+    std::string text = kGood;
+    const std::size_t pos = text.find("\n" + at + "\n");
+    ASSERT_NE(pos, std::string::npos) << at;
+    const bool replace = at.substr(0, at.find(' ')) == line.substr(0, line.find(' '));
+    const std::size_t line_start = replace ? pos + 1 : pos + at.size() + 2;
+    if (replace) text.replace(pos + 1, at.size(), line);
+    else text.insert(line_start, line + "\n");
+    const int line_no = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(line_start), '\n'));
+    const auto file = write("typed.toml", text);
+    const auto p = load_problem(file);
+    expect_error(p, file.string() + ":" + std::to_string(line_no + c.line_offset) + ":");
+    expect_error(p, c.needle);
+  }
+  std::string table = kGood;
+  table.replace(table.find("[[obstacle]]"), 12, "[obstacle]");
+  expect_error(load_problem(write("table.toml", table)), "obstacle: must be an array of tables: write [[obstacle]]");
+  std::string zero = kGood;
+  zero.replace(zero.find("axis = [0, 0, 1]"), 16, "axis = [0, 0, 0]");
+  expect_error(load_problem(write("zero.toml", zero)), "body[0].pose.axis: must not be zero");
+}
+
+// Components too large for their squares to be finite still give the rotation they mean.
+TEST_F(ProblemFiles, HugeQuaternionComponentsAreNormalisedSafely) {
+  std::string huge = kGood;
+  huge.replace(huge.find("quaternion = [0, 0, 0, 1]"), 25, "quaternion = [0, 0, 1e300, 1e300]");
+  auto p = load_problem(write("huge.toml", huge));
+  ASSERT_TRUE(p) << p.error().message;
+  // 90° about z, not the identity the overflowed norm used to give.
+  EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->start.rotation), std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(p->start.rotation(1, 0), 1.0, 1e-12);
+  std::string tiny = kGood;
+  tiny.replace(tiny.find("quaternion = [0, 0, 0, 1]"), 25, "quaternion = [1e-300, 0, 0, 0]");
+  p = load_problem(write("tiny.toml", tiny));
+  ASSERT_TRUE(p) << p.error().message;
+  EXPECT_NEAR(p->start.rotation(1, 1), -1.0, 1e-12);  // 180° about x
+  std::string axis = kGood;
+  axis.replace(axis.find("axis = [0, 0, 1], angle_deg = 0"), 31, "axis = [0, 1e308, 1e308], angle_deg = 180");
+  p = load_problem(write("axis.toml", axis));
+  ASSERT_TRUE(p) << p.error().message;
+  EXPECT_NEAR(p->body[0].pose.rotation(0, 0), -1.0, 1e-12);
+  EXPECT_NEAR(p->body[0].pose.rotation(1, 2), 1.0, 1e-12);
+
+  // The same in path files.
+  auto path = read_path(write("huge.path", "1 2 3 0 0 1e300 1e300\n"));
+  ASSERT_TRUE(path) << path.error().message;
+  EXPECT_NEAR(path->poses[0].rotation(1, 0), 1.0, 1e-12);
+  path = read_path(write("huge.json", R"({"poses": [{"translation": [1, 2, 3], "quaternion": [0, 0, 1e300, 1e300]}]})"));
+  ASSERT_TRUE(path) << path.error().message;
+  EXPECT_NEAR(path->poses[0].rotation(1, 0), 1.0, 1e-12);
+}
+
+const char* kCfg = R"([problem]
+robot = peg.stl
+world = block.stl
+start.x = 0
+start.y = 0
+start.z = -7.49
+start.theta = 0
+start.axis.x = 0
+start.axis.y = 0
+start.axis.z = 1
+goal.x = 0
+goal.y = 0
+goal.z = 40
+goal.theta = 1.5
+goal.axis.x = 0
+goal.axis.y = 0
+goal.axis.z = 1
+)";
+
+TEST_F(ProblemFiles, CfgDuplicatesZeroAxesAndNonFiniteNumbersAreErrors) {
+  ASSERT_TRUE(load_problem(write("good.cfg", kCfg)));
+  expect_error(load_problem(write("dup.cfg", std::string(kCfg) + "goal.z = 50\n")), "dup.cfg:18: goal.z: given twice (first on line 13)");
+  std::string zero = kCfg;
+  zero.replace(zero.find("goal.axis.z = 1"), 15, "goal.axis.z = 0");
+  expect_error(load_problem(write("zero.cfg", zero)), "zero.cfg:14: goal.theta: a rotation of 1.5 rad needs a non-zero goal.axis");
+  std::string none = kCfg;
+  none.erase(none.find("goal.axis.x"));
+  expect_error(load_problem(write("none.cfg", none)), "none.cfg:14: goal.theta");
+  std::string tiny = kCfg;
+  tiny.replace(tiny.find("goal.axis.z = 1"), 15, "goal.axis.z = 1e-10");
+  expect_error(load_problem(write("tiny.cfg", tiny)), "tiny.cfg:14: goal.theta");
+  std::string still = kCfg;  // a zero axis with a zero angle is no rotation, as in OMPL
+  still.replace(still.find("start.axis.z = 1"), 16, "start.axis.z = 0");
+  auto p = load_problem(write("still.cfg", still));
+  ASSERT_TRUE(p) << p.error().message;
+  EXPECT_TRUE(p->start.rotation.isIdentity());
+  for (const char* bad : {"inf", "nan", "-inf", "1e999"}) {
+    std::string text = kCfg;
+    text.replace(text.find("start.y = 0"), 11, std::string("start.y = ") + bad);
+    expect_error(load_problem(write("nonfinite.cfg", text)), "nonfinite.cfg:5: start.y: must be a finite number");
+  }
+  std::string huge_axis = kCfg;
+  huge_axis.replace(huge_axis.find("goal.axis.z = 1"), 15, "goal.axis.z = 1e308\ngoal.axis.z2 = 1");
+  huge_axis.replace(huge_axis.find("goal.axis.y = 0"), 15, "goal.axis.y = 1e308");
+  p = load_problem(write("huge.cfg", huge_axis));
+  ASSERT_TRUE(p) << p.error().message;
+  EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->goal->rotation), 1.5, 1e-12);
 }
 
 TEST_F(ProblemFiles, BadPathFiles) {
