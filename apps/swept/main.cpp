@@ -20,7 +20,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version end here with code 0. Any other command-line error (a missing file,
+    // an unknown option, a value out of range) is bad input: one line and exit code 1, not
+    // CLI11's own codes (105, 106, ...).
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "swept: error: " << e.what() << " (see --help)\n";
+    return 1;
   } catch (const swept::cli::ExitCode& e) {
     return e.code;
   } catch (const std::exception& e) {
