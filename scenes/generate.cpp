@@ -2,6 +2,7 @@
 #include "swept/scenes/modeling.h"
 #include "swept/scenes/scene_model.h"
 #include "swept/scenes/scenes.h"
+#include "swept/io/file_write.h"
 #include "swept/io/mesh_io.h"
 
 #include <Standard_Failure.hxx>
@@ -225,9 +226,7 @@ Result<SceneReport> generate_scene(const GenerateRequest& request) {
       report.meshes.push_back({p.file, p.body, soup.triangles.size()});
     }
     report.problem_file = request.output_dir / "problem.toml";
-    std::ofstream out(report.problem_file, std::ios::binary);
-    out << problem_toml(model, report);
-    if (!out) return Error{"cannot write " + report.problem_file.string()};
+    if (auto w = write_file_atomically(report.problem_file, problem_toml(model, report)); !w) return w.error();
   } catch (const Standard_Failure& e) {
     return Error{"scene '" + info->name + "': OpenCASCADE " + e.DynamicType()->Name() + ": " + e.GetMessageString()};
   } catch (const std::exception& e) {

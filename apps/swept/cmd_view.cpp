@@ -6,6 +6,7 @@
 // high-water mark, both zigzag coded in byte planes, deflated (zlib) and base64-encoded; the
 // browser inflates them with its own DecompressionStream, offline (viewer/src/decode.js).
 #include "commands.h"
+#include "output.h"
 
 #include "swept/plan/planner.h"
 #include "swept/query/query.h"
@@ -23,6 +24,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -265,8 +267,7 @@ void write_view(const Problem& problem, const PlanScene& scene, const Path& path
         {"margin", problem.clearance}, {"min", min_distance}}},
   };
 
-  std::ofstream out(html_file, std::ios::binary);
-  if (!out) throw std::runtime_error(html_file + ": cannot write");
+  std::ostringstream out;  // written whole or not at all below
   out << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       << "<title>swept view: " << html_escape(title) << "</title>\n</head>\n<body>\n"
@@ -274,8 +275,7 @@ void write_view(const Problem& problem, const PlanScene& scene, const Path& path
       << "<script>";
   out.write(viewer_script_data, static_cast<std::streamsize>(viewer_script_size));
   out << "</script>\n</body>\n</html>\n";
-  out.close();
-  if (!out) throw std::runtime_error(html_file + ": write failed");
+  write_output(html_file, out.str());
 }
 
 void run(const ViewOptions& o) {

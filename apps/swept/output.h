@@ -1,10 +1,14 @@
 #pragma once
-/// Small helpers for the CLI's aligned tables and number formatting.
+/// Small helpers for the CLI: aligned tables, number formatting, writing output files.
+#include "swept/io/file_write.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace swept::cli {
@@ -49,5 +53,13 @@ inline std::string fmt_sci(double v) {
 }
 
 inline std::string fmt_int(std::size_t v) { return std::to_string(v); }
+
+/// Writes an output file (path, JSON, HTML, SVG, ...) whole or not at all: through a temporary
+/// file in the same folder renamed into place after a successful flush and close, or in place for
+/// devices such as /dev/full (swept::write_file_atomically). Throws std::runtime_error naming the
+/// file and the reason, which the CLI turns into exit code 1.
+inline void write_output(const std::string& file, std::string_view bytes) {
+  if (auto written = write_file_atomically(file, bytes); !written) throw std::runtime_error(written.error().message);
+}
 
 }  // namespace swept::cli

@@ -1,10 +1,11 @@
 // SVG grouped bar charts for the benchmark reports.
 #include "svg_plot.h"
 
+#include "output.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -183,10 +184,7 @@ std::string render_svg(const BarChart& chart) {
 }
 
 void write_svg(const BarChart& chart, const std::string& file) {
-  const std::string svg = render_svg(chart);
-  std::ofstream out(file, std::ios::binary);
-  out << svg;
-  if (!out) throw std::runtime_error(file + ": cannot write the plot");
+  write_output(file, render_svg(chart));
 }
 
 }  // namespace swept::cli

@@ -2,6 +2,8 @@
 // (non-finite coordinates, empty results, degenerate-triangle counting); write_stl_binary().
 #include "swept/io/mesh_io.h"
 
+#include "swept/io/file_write.h"
+
 #include "import_detail.h"
 
 #include <algorithm>
@@ -204,12 +206,7 @@ Result<bool> write_stl_binary(const std::filesystem::path& file, const TriangleS
     out.push_back('\0');
   }
 
-  std::ofstream f(file, std::ios::binary | std::ios::trunc);
-  if (!f) return file_error(display, "cannot open file for writing");
-  f.write(out.data(), static_cast<std::streamsize>(out.size()));
-  f.close();
-  if (!f) return file_error(display, "write failed");
-  return true;
+  return write_file_atomically(file, out);
 }
 
 }  // namespace swept

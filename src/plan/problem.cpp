@@ -1,6 +1,7 @@
 // Problem files: TOML (docs/problem-format.md) and OMPL.app .cfg; path files.
 #include "swept/plan/problem.h"
 
+#include "swept/io/file_write.h"
 #include "swept/io/mesh_io.h"
 
 #include <nlohmann/json.hpp>
@@ -465,8 +466,7 @@ Result<Problem> load_problem(const fs::path& file) {
 }
 
 Result<bool> write_path(const fs::path& file, const Path& path, const std::string& unit, const Vec3& reference) {
-  std::ofstream out(file);
-  if (!out) return Error{file.string() + ": cannot write"};
+  std::ostringstream out;
   out << std::setprecision(17);
   if (file.extension() == ".path") {
     for (const Pose& p : path.poses) {
@@ -484,8 +484,7 @@ Result<bool> write_path(const fs::path& file, const Path& path, const std::strin
     nlohmann::json doc{{"unit", unit}, {"reference_point", {reference.x(), reference.y(), reference.z()}}, {"poses", poses}};
     out << doc.dump(1) << '\n';
   }
-  if (!out) return Error{file.string() + ": write failed"};
-  return true;
+  return write_file_atomically(file, out.str());
 }
 
 Result<Path> read_path(const fs::path& file) {

@@ -70,7 +70,8 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
 
 /// Writes a binary STL (little-endian, float32; normals from the vertex order, zero for
 /// degenerate triangles; an 80-byte header not starting with "solid"). Deterministic bytes
-/// for equal input. Error (nothing written) on non-finite coordinates or an unwritable path.
+/// for equal input. Written whole or not at all (write_file_atomically()). Error (nothing
+/// written) on non-finite coordinates or an unwritable path.
 Result<bool> write_stl_binary(const std::filesystem::path& file, const TriangleSoup& soup);
 
 }  // namespace swept

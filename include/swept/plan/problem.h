@@ -57,7 +57,7 @@ struct Path {
 
 /// Writes a path: OMPL `.path` (one `x y z qx qy qz qw` line per pose) when the file name ends
 /// in `.path`, otherwise our JSON ({"unit", "reference_point", "poses": [{"translation",
-/// "quaternion" (x, y, z, w)}]}).
+/// "quaternion" (x, y, z, w)}]}). Written whole or not at all (write_file_atomically()).
 Result<bool> write_path(const std::filesystem::path& file, const Path& path, const std::string& unit,
                         const Vec3& reference_point);
 
