@@ -417,9 +417,10 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
   }
 
   try {
+    // COLLADA's <up_axis> is honoured as assimp does by default, and so as OMPL.app does: a Z_UP
+    // file's (x, y, z) reads as (x, z, -y), an X_UP file's as (-y, x, z) (ColladaLoader
+    // multiplies the root node's transformation by that rotation after the <unit> scale).
     Assimp::Importer importer;
-    // Keep COLLADA coordinates as authored (assimp would rotate Z-up files to Y-up).
-    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     // ValidateDataStructure rejects face indices past the vertex list (and other broken scenes)
     // before any other step reads them.
     const aiScene* scene = importer.ReadFile(ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate);

@@ -439,21 +439,23 @@ TEST(ImportGltf, BinaryGlb) {
   expect_error(import_mesh(bad), {bad.string(), "assimp"});
 }
 
-TEST(ImportCollada, UnitAndZUpAreRespected) {
-  const std::string dae = R"(<?xml version="1.0" encoding="utf-8"?>
+// A one-triangle COLLADA file in millimetres with the given <up_axis>.
+std::string collada_triangle(const std::string& up_axis) {
+  return R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
-  <asset><unit name="millimeter" meter="0.001"/><up_axis>Z_UP</up_axis></asset>
+  <asset><unit name="millimeter" meter="0.001"/><up_axis>)" +
+         up_axis + R"(</up_axis></asset>
   <library_geometries>
     <geometry id="g" name="bracket">
       <mesh>
         <source id="g-pos">
-          <float_array id="g-pos-array" count="12">0 0 0 10 0 0 0 20 0 0 0 30</float_array>
-          <technique_common><accessor source="#g-pos-array" count="4" stride="3">
+          <float_array id="g-pos-array" count="9">1 2 3 10 0 0 0 20 30</float_array>
+          <technique_common><accessor source="#g-pos-array" count="3" stride="3">
             <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
           </accessor></technique_common>
         </source>
         <vertices id="g-vtx"><input semantic="POSITION" source="#g-pos"/></vertices>
-        <triangles count="2"><input semantic="VERTEX" source="#g-vtx" offset="0"/><p>0 1 2 0 1 3</p></triangles>
+        <triangles count="1"><input semantic="VERTEX" source="#g-vtx" offset="0"/><p>0 1 2</p></triangles>
       </mesh>
     </geometry>
   </library_geometries>
@@ -463,13 +465,36 @@ TEST(ImportCollada, UnitAndZUpAreRespected) {
   <scene><instance_visual_scene url="#s"/></scene>
 </COLLADA>
 )";
-  const auto model = import_mesh(write_file(scratch_dir() / "bracket.dae", dae));
-  ASSERT_TRUE(model.ok()) << model.error().message;
-  ASSERT_EQ(model->triangle_count(), 2u);
-  const Aabb box = bounds(model->merged().triangles);
-  // assimp applies the <unit> scale in single precision.
-  expect_vec(box.min, 0, 0, 0, 1e-9);
-  expect_vec(box.max, 10, 20, 30, 1e-5);
+}
+
+// COLLADA's <unit> and <up_axis> are applied as assimp does by default, which is what OMPL.app
+// (and so its .cfg poses) sees. assimp's ColladaLoader::InternReadFile multiplies the root
+// node's transformation by the unit scale and then, for Z_UP, by the rows (1 0 0; 0 0 1; 0 -1 0):
+// a vertex (x, y, z) of the file reads as s·(x, z, −y). For X_UP the rows are (0 −1 0; 1 0 0;
+// 0 0 1): (x, y, z) reads as s·(−y, x, z). Y_UP (the default) is kept as it is.
+TEST(ImportCollada, UnitAndUpAxisAreAppliedAsAssimpDoes) {
+  const auto dir = scratch_dir();
+  struct Case {
+    const char* up;
+    Vec3 p, q, r;  // the file's (1, 2, 3), (10, 0, 0), (0, 20, 30) after the up-axis rotation
+  };
+  const Case cases[] = {
+      {"Z_UP", Vec3(1, 3, -2), Vec3(10, 0, 0), Vec3(0, 30, -20)},
+      {"Y_UP", Vec3(1, 2, 3), Vec3(10, 0, 0), Vec3(0, 20, 30)},
+      {"X_UP", Vec3(-2, 1, 3), Vec3(0, 10, 0), Vec3(-20, 0, 30)},
+  };
+  for (const Case& c : cases) {
+    const auto model = import_mesh(write_file(dir / (std::string(c.up) + ".dae"), collada_triangle(c.up)));
+    ASSERT_TRUE(model.ok()) << model.error().message;
+    ASSERT_EQ(model->triangle_count(), 1u);
+    const Triangle& t = model->parts[0].triangles[0];
+    // <unit meter="0.001"> and the default file unit "m" for COLLADA: millimetres again, up to
+    // assimp's single-precision scale.
+    SCOPED_TRACE(c.up);
+    expect_vec(t.p, c.p.x(), c.p.y(), c.p.z(), 1e-5);
+    expect_vec(t.q, c.q.x(), c.q.y(), c.q.z(), 1e-5);
+    expect_vec(t.r, c.r.x(), c.r.y(), c.r.z(), 1e-5);
+  }
 }
 
 TEST(ImportErrors, MissingUnknownEmptyAndBadUnit) {

@@ -24,7 +24,8 @@ struct ImportOptions {
   /// Unit of the output coordinates.
   std::string unit = "mm";
   /// Unit of the file's coordinates. Empty: "mm" for STL, OBJ, PLY, OFF and .brep; "m" for
-  /// glTF/GLB (its spec) and COLLADA (assimp applies the file's <unit>). Ignored for STEP and
+  /// glTF/GLB (its spec) and COLLADA (assimp applies the file's <unit>, and its <up_axis> as
+  /// assimp and OMPL.app do by default: Z_UP (x, y, z) reads as (x, z, -y)). Ignored for STEP and
   /// IGES, which declare their unit (e.g. inch) and are converted from it.
   std::string file_unit;
   /// BRepMesh linear deflection (max chord distance to the surface) in the *output* unit;
