@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "fcl_peer.h"
 #include "output.h"
+#include "paper_verdicts.h"
 #include "svg_plot.h"
 
 #include "swept/bvh/bvh.h"
@@ -80,32 +81,7 @@ struct PaperOptions {
   double ompl_time_limit = 0.0;  ///< s; 0: 10 at test scale, 60 at paper scale
 };
 
-constexpr Fitter kFitters[] = {Fitter::pqp, Fitter::rapid2, Fitter::inertia};
-constexpr SplitRule kSplits[] = {SplitRule::min_sa, SplitRule::largest};
-
-std::string config_name(Fitter f, SplitRule s) { return std::string(to_string(f)) + "/" + std::string(to_string(s)); }
-
-// ---- statistics --------------------------------------------------------------------------------
-
-/// Median and range over runs.
-struct Spread {
-  double median = std::numeric_limits<double>::quiet_NaN();
-  double min = std::numeric_limits<double>::quiet_NaN();
-  double max = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> samples;
-};
-
-Spread spread_of(std::vector<double> v) {
-  Spread s;
-  s.samples = v;
-  if (v.empty()) return s;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  s.min = v.front();
-  s.max = v.back();
-  return s;
-}
+// ---- statistics (Spread, Ratio and the rows are in paper_verdicts.h) --------------------------- --------------------------------------------------------------------------------
 
 nlohmann::json to_json(const Spread& s) {
   return {{"median", s.median}, {"min", s.min}, {"max", s.max}, {"samples", s.samples}};
@@ -123,28 +99,6 @@ std::string fmt_g(double v, int digits = 4) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
-}
-
-/// Ratio a/b with its range from the runs' extremes: [a.min/b.max, a.max/b.min].
-struct Ratio {
-  double value = std::numeric_limits<double>::quiet_NaN(), low = value, high = value;
-  bool ranged = false;  ///< both sides have more than one run
-};
-
-Ratio ratio_of(const Spread& a, const Spread& b) {
-  Ratio r;
-  if (!(b.median > 0) || !(b.min > 0) || !(b.max > 0)) return r;
-  r.value = a.median / b.median;
-  r.low = a.min / b.max;
-  r.high = a.max / b.min;
-  r.ranged = a.samples.size() > 1 && b.samples.size() > 1;
-  return r;
-}
-
-std::string fmt_ratio(const Ratio& r, bool range) {
-  if (!std::isfinite(r.value)) return "n/a";
-  if (!range || !r.ranged) return fmt_fixed(r.value, 2) + "×";
-  return fmt_fixed(r.value, 2) + "× (" + fmt_fixed(r.low, 2) + "–" + fmt_fixed(r.high, 2) + ")";
 }
 
 // ---- seeded pose sets --------------------------------------------------------------------------
@@ -226,53 +180,7 @@ Spread time_queries(const std::vector<Pose>& poses, int runs, F&& f) {
   return spread_of(per_run);
 }
 
-// ---- results -----------------------------------------------------------------------------------
-
-struct TreeFigures {
-  Fitter fitter;
-  SplitRule split;
-  BvhStats stats;
-  Spread build_ms;  ///< CPU time of a serial build
-};
-
-/// One mesh of Tables II and IV.
-struct MeshRow {
-  std::string name;    ///< e.g. "air-cleaner †"
-  std::string source;  ///< file or scene part
-  std::string kind;    ///< "scene-body", "scene-obstacles", "cad"
-  std::size_t triangles = 0;
-  std::size_t paper_triangles = 0;  ///< Table I, for the scenes
-  std::vector<TreeFigures> trees;
-  Spread fcl_obbrss_build_ms, fcl_rss_build_ms;
-
-  const TreeFigures& tree(Fitter f, SplitRule s) const {
-    for (const TreeFigures& t : trees)
-      if (t.fitter == f && t.split == s) return t;
-    throw std::logic_error("missing tree figures");
-  }
-};
-
-/// One planner configuration of Table III.
-struct PlanRow {
-  std::string scene;
-  Fitter fitter = Fitter::pqp;
-  SplitRule split = SplitRule::min_sa;
-  Spread cpu_ms;   ///< CPU time of plan(): the timing used for speed-ups
-  Spread wall_ms;  ///< wall time of plan() (inflated by other processes on a shared machine)
-  std::vector<std::string> statuses;
-  int solved = 0;
-  std::uint64_t distance_queries = 0, tolerance_queries = 0, collide_queries = 0;
-  std::size_t waypoints = 0;
-  bool same_path = true;  ///< the same path hash on every run
-};
-
-struct QueryRow {
-  QueryRow(std::string scene_name, std::string set_name, std::string engine_name, std::size_t pose_count)
-      : scene(std::move(scene_name)), set(std::move(set_name)), engine(std::move(engine_name)), poses(pose_count) {}
-  std::string scene, set, engine;
-  std::size_t poses = 0;
-  Spread collide_us, distance_us;
-};
+// ---- results (MeshRow, PlanRow, QueryRow: paper_verdicts.h) ------------------------------------
 
 struct SceneRun {
   std::string name;
@@ -665,27 +573,6 @@ std::string command_line(const PaperOptions& o) {
   return c;
 }
 
-const PlanRow* find_plan(const Results& r, const std::string& scene, Fitter f, SplitRule s) {
-  for (const PlanRow& p : r.plans)
-    if (p.scene == scene && p.fitter == f && p.split == s) return &p;
-  return nullptr;
-}
-
-const QueryRow* find_query(const Results& r, const std::string& scene, const std::string& set, const std::string& engine) {
-  for (const QueryRow& q : r.queries)
-    if (q.scene == scene && q.set == set && q.engine == engine) return &q;
-  return nullptr;
-}
-
-std::string upper_name(Fitter f) {
-  switch (f) {
-    case Fitter::pqp: return "PQP_FIT";
-    case Fitter::rapid2: return "RAPID2_FIT";
-    case Fitter::inertia: return "INERTIA_FIT";
-  }
-  return "?";
-}
-
 std::vector<std::string> planned_scenes(const Results& r) {
   std::vector<std::string> names;
   for (const SceneRun& s : r.scenes)
@@ -693,151 +580,15 @@ std::vector<std::string> planned_scenes(const Results& r) {
   return names;
 }
 
-/// The claims of the paper, each with what this run says.
-std::vector<std::pair<std::string, std::string>> assess_claims(const Results& r, int runs) {
-  std::vector<std::pair<std::string, std::string>> out;
-  const bool spread = runs > 1;
-  const std::string spread_note = spread ? "" : " (a single run: no spread to judge noise by)";
-  // 1. Tighter trees (the paper's split rule, min-sa; and PQP's own, largest).
-  {
-    std::ostringstream s;
-    int both_all = 0, meshes = 0;
-    for (const SplitRule sp : kSplits) {
-      int sa = 0, vol = 0, both = 0, n = 0, sa_r = 0, vol_r = 0;
-      double worst_sa = 0.0, best_sa = std::numeric_limits<double>::infinity();
-      for (const MeshRow& m : r.meshes) {
-        const BvhStats& i = m.tree(Fitter::inertia, sp).stats;
-        const BvhStats& p = m.tree(Fitter::pqp, sp).stats;
-        const BvhStats& q = m.tree(Fitter::rapid2, sp).stats;
-        ++n;
-        sa += i.total_surface_area < p.total_surface_area;
-        vol += i.total_volume < p.total_volume;
-        both += i.total_surface_area < p.total_surface_area && i.total_volume < p.total_volume;
-        sa_r += i.total_surface_area < q.total_surface_area;
-        vol_r += i.total_volume < q.total_volume;
-        const double ratio = i.total_surface_area / p.total_surface_area;
-        worst_sa = std::max(worst_sa, ratio);
-        best_sa = std::min(best_sa, ratio);
-      }
-      if (sp == SplitRule::min_sa) {
-        both_all = both;
-        meshes = n;
-      }
-      s << "split " << to_string(sp) << ": INERTIA_FIT has a smaller total RSS surface area than PQP_FIT on " << sa
-        << " of " << n << " meshes and a smaller total volume on " << vol << " (both on " << both
-        << "); SA ratio inertia/pqp " << fmt_fixed(best_sa, 3) << "–" << fmt_fixed(worst_sa, 3)
-        << "; against RAPID2_FIT: smaller SA on " << sa_r << ", smaller volume on " << vol_r << ". ";
-    }
-    std::string verdict;
-    if (meshes == 0)
-      verdict = "not measured (no mesh). ";
-    else if (4 * both_all >= 3 * meshes)
-      verdict = "Confirmed (paper's split rule, min-sa): ";
-    else if (2 * both_all >= meshes)
-      verdict = "Partly confirmed (paper's split rule, min-sa): ";
-    else
-      verdict = "Not confirmed (paper's split rule, min-sa): ";
-    out.push_back({"INERTIA_FIT builds tighter RSS trees (Table II: lower total surface area and volume in almost all "
-                   "cases)",
-                   verdict + s.str() + "Tree sizes are deterministic: no spread."});
-  }
-  // 2. Up to 20 % faster planning than PQP_FIT.
-  {
-    std::ostringstream s;
-    int faster = 0, slower = 0, n = 0;
-    double best = 0.0;
-    for (const std::string& sc : planned_scenes(r)) {
-      const PlanRow* p = find_plan(r, sc, Fitter::pqp, SplitRule::min_sa);
-      const PlanRow* i = find_plan(r, sc, Fitter::inertia, SplitRule::min_sa);
-      if (!p || !i) continue;
-      const Ratio sp = ratio_of(p->cpu_ms, i->cpu_ms);
-      if (!std::isfinite(sp.value)) continue;
-      ++n;
-      if (sp.low > 1.0) ++faster;
-      if (sp.high < 1.0) ++slower;
-      best = std::max(best, sp.value);
-      s << sc << " " << fmt_ratio(sp, spread);
-      if (i->solved < static_cast<int>(i->statuses.size()) || p->solved < static_cast<int>(p->statuses.size()))
-        s << " [not every run solved]";
-      s << "; ";
-    }
-    std::string verdict;
-    if (n == 0)
-      verdict = "Not measured (no planned scene). ";
-    else if (!spread)
-      verdict = best > 1.0 ? "Indicated but not established (one run): " : "Not confirmed (one run): ";
-    else if (faster > 0 && slower == 0)
-      verdict = "Confirmed: ";
-    else if (faster > 0)
-      verdict = "Mixed: ";
-    else if (slower > 0)
-      verdict = "Not confirmed (INERTIA_FIT slower beyond the spread on " + std::to_string(slower) + " scene(s)): ";
-    else
-      verdict = "Not confirmed (no difference beyond the run-to-run spread): ";
-    verdict += "speed-up of INERTIA_FIT over PQP_FIT (min-sa split; median and range over runs) ";
-    out.push_back({"INERTIA_FIT plans up to 20 % faster than PQP_FIT (Table III: 1.07–1.18×)",
-                   verdict + s.str() + "faster beyond the spread on " + std::to_string(faster) + " of " +
-                       std::to_string(n) + " scenes; best median speed-up " + fmt_fixed(best, 2) + "×" + spread_note +
-                       "."});
-  }
-  // 3. ~1.14× build time.
-  {
-    std::ostringstream s;
-    double log_sum = 0.0, lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-    int n = 0;
-    for (const MeshRow& m : r.meshes) {
-      const double ratio =
-          m.tree(Fitter::inertia, SplitRule::min_sa).build_ms.median / m.tree(Fitter::pqp, SplitRule::min_sa).build_ms.median;
-      if (!(ratio > 0) || !std::isfinite(ratio)) continue;
-      log_sum += std::log(ratio);
-      lo = std::min(lo, ratio);
-      hi = std::max(hi, ratio);
-      ++n;
-    }
-    std::string verdict;
-    if (n == 0) {
-      verdict = "Not measured.";
-    } else {
-      const double gm = std::exp(log_sum / n);
-      verdict = gm >= 1.0 && gm <= 1.3 ? "Consistent: " : (gm < 1.0 ? "Not confirmed (ours is cheaper): " : "Not confirmed (ours costs more): ");
-      s << "INERTIA_FIT / PQP_FIT build time (min-sa, serial build, medians) is " << fmt_fixed(gm, 2)
-        << "× in geometric mean over " << n << " meshes, " << fmt_fixed(lo, 2) << "–" << fmt_fixed(hi, 2)
-        << "× per mesh" << spread_note << ".";
-      verdict += s.str();
-    }
-    out.push_back({"INERTIA_FIT builds trees in ~1.14× PQP_FIT's time (Table IV)", verdict});
-  }
-  // 4. RAPID2_FIT 1.4–3.7× slower planning.
-  {
-    std::ostringstream s;
-    int n = 0, in_range = 0, slower = 0;
-    for (const std::string& sc : planned_scenes(r)) {
-      const PlanRow* p = find_plan(r, sc, Fitter::pqp, SplitRule::min_sa);
-      const PlanRow* q = find_plan(r, sc, Fitter::rapid2, SplitRule::min_sa);
-      if (!p || !q) continue;
-      const Ratio sl = ratio_of(q->cpu_ms, p->cpu_ms);
-      if (!std::isfinite(sl.value)) continue;
-      ++n;
-      if (sl.low > 1.0) ++slower;
-      if (sl.value >= 1.4) ++in_range;
-      s << sc << " " << fmt_ratio(sl, spread) << "; ";
-    }
-    std::string verdict;
-    if (n == 0)
-      verdict = "Not measured. ";
-    else if (in_range == n && (slower == n || !spread))
-      verdict = "Confirmed: ";
-    else if (in_range > 0)
-      verdict = "Partly confirmed (at least 1.4× slower on some scenes only): ";
-    else
-      verdict = "Not confirmed (RAPID2_FIT is not 1.4× slower on any scene): ";
-    out.push_back({"RAPID2_FIT plans 1.4–3.7× slower than PQP_FIT (Table III: speed-ups 0.27–0.69)",
-                   verdict + "RAPID2_FIT / PQP_FIT planning time (min-sa; median and range over runs) " + s.str() +
-                       "slower beyond the spread on " + std::to_string(slower) + " of " + std::to_string(n) +
-                       " scenes, at least 1.4× on " + std::to_string(in_range) + spread_note + "."});
-  }
-  return out;
+const PlanRow* find_plan(const Results& r, const std::string& scene, Fitter f, SplitRule s) {
+  return find_plan(r.plans, scene, f, s);
 }
+
+const QueryRow* find_query(const Results& r, const std::string& scene, const std::string& set, const std::string& engine) {
+  return find_query(r.queries, scene, set, engine);
+}
+
+PaperRows rows_of(const Results& r) { return {r.meshes, r.plans, r.queries, planned_scenes(r)}; }
 
 void write_plots(const Results& r, const fs::path& img, std::vector<std::string>& files) {
   fs::create_directories(img);
@@ -1042,8 +793,13 @@ std::string markdown_report(const Results& r, const PaperOptions& o, const std::
     md << "\n";
   }
 
+  const PaperRows rows = rows_of(r);
   md << "## The paper's claims\n\n";
-  for (const auto& [claim, verdict] : assess_claims(r, o.runs)) md << "- **" << claim << "** — " << verdict << "\n";
+  for (const ClaimVerdict& c : assess_claims(rows, o.runs)) md << "- **" << c.claim << "** — " << c.text() << "\n";
+  md << "\n";
+  md << "## The peers in numbers\n\nRatios are FCL's time / swept's time (> 1: swept is faster), each range over every "
+        "row it names.\n\n";
+  for (const std::string& f : peer_findings(rows)) md << "- " << f << "\n";
   md << "\n";
 
   if (!plots.empty()) {
@@ -1133,7 +889,9 @@ nlohmann::json results_json(const Results& r, const PaperOptions& o, const std::
                                      {"fcl_build_ms", w.fcl_build_ms},
                                      {"swept_inertia_ms", w.swept_ms},
                                      {"swept_status", w.swept_status}});
-  for (const auto& [claim, verdict] : assess_claims(r, o.runs)) j["claims"].push_back({{"claim", claim}, {"finding", verdict}});
+  for (const ClaimVerdict& c : assess_claims(rows_of(r), o.runs))
+    j["claims"].push_back({{"claim", c.claim}, {"verdict", std::string(to_string(c.verdict))}, {"finding", c.text()}});
+  j["peer_findings"] = peer_findings(rows_of(r));
   j["notes"] = r.notes;
   return j;
 }
