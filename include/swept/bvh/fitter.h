@@ -22,8 +22,11 @@ double degeneracy_epsilon(std::span<const Triangle> triangles);
 /// identity axes at the origin; zero-area sets fall back to PQP_FIT (`fell_back` is set).
 Fit fit(std::span<const Triangle> triangles, Fitter fitter);
 
-/// The smallest RSS with frame `axes` (e1 long side, e2 short side, e3 normal) that contains
-/// every vertex of every triangle (SPEC §2.3). `axes` must be orthonormal.
+/// A tight RSS with frame `axes` (e1 long side, e2 short side, e3 normal) that contains
+/// every vertex of every triangle (SPEC §2.3): the smallest radius for that frame, and a
+/// rectangle no larger than the vertices' bounding box there; rounded corners are handled
+/// greedily, so the rectangle is not always the smallest (docs/fitters.md). `axes` must be
+/// orthonormal.
 Rss fit_rss(std::span<const Triangle> triangles, const Mat3& axes);
 
 }  // namespace swept
