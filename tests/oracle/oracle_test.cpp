@@ -3,6 +3,7 @@
 #include "oracle/path_oracle.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <chrono>
 #include <cmath>
@@ -403,6 +404,31 @@ TEST(OraclePath, EscapeMustEndWithFullClearance) {
   EXPECT_FALSE(r.valid);
   EXPECT_EQ(r.bad_segment, 0);
   EXPECT_EQ(r.bad_t, 1.0) << r.why;
+}
+
+TEST(OraclePath, SameReportAtAnyThreadCount) {
+  // Results are gathered in path order whatever the scheduling: the same report, bit for bit.
+  PathCheckInput in;
+  in.obstacles = box(V(-0.1, -5, -5), V(0.1, 5, 5));
+  in.body = box(V(-2, -0.1, -0.1), V(2, 0.1, 0.1));
+  in.poses = {at(V(-3, 0, 0)), rotated(V::UnitZ(), 1.0, V(-3, 0, 3)), rotated(V(1, 1, 0), 2.0, V(3, 1, 0)),
+              at(V(4, 0, 0))};
+  in.clearance = 0.01;
+  auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return check_path(in);
+  };
+  const PathCheckReport one = run(1), two = run(2), four = run(4);
+  for (const PathCheckReport* r : {&two, &four}) {
+    EXPECT_EQ(r->valid, one.valid);
+    EXPECT_EQ(r->why, one.why);
+    EXPECT_EQ(r->bad_segment, one.bad_segment);
+    EXPECT_EQ(r->bad_t, one.bad_t);
+    EXPECT_EQ(r->dense_min, one.dense_min);
+    EXPECT_EQ(r->certificate_queries, one.certificate_queries);
+  }
+  EXPECT_FALSE(one.valid);  // the bar's second move sweeps through the wall
+  EXPECT_EQ(one.bad_segment, 1) << one.why;
 }
 
 TEST(OraclePath, MotionAndAngle) {
