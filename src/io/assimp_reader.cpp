@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <string_view>
 
 namespace swept::io_detail {
@@ -407,15 +408,46 @@ std::string collect(const aiScene& scene, const aiNode& node, const Affine& pare
 
 }  // namespace
 
-Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
-  const std::string ext = lower(ctx.file.extension().string());
-  if (ext == ".obj" || ext == ".off" || ext == ".ply") {
-    Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
-    if (!text) return text.error();
-    const std::string err = ext == ".obj" ? check_obj(*text) : ext == ".off" ? check_off(*text) : check_ply(*text);
-    if (!err.empty()) return file_error(ctx.display, err);
-  }
+namespace {
 
+// OBJ, OFF and PLY are checked by us first (assimp takes malformed numbers silently and hangs on
+// some truncated PLY files); so is STL, read with assimp only for ompl_app_center() (assimp
+// takes a truncated binary STL silently). nullopt when fine.
+std::optional<Error> precheck(const ReadContext& ctx) {
+  const std::string ext = lower(ctx.file.extension().string());
+  if (ext == ".stl") {
+    std::vector<TriangleSoup> parts;
+    if (Result<bool> read = read_stl(ctx, parts); !read) return read.error();
+    return std::nullopt;
+  }
+  if (ext != ".obj" && ext != ".off" && ext != ".ply") return std::nullopt;
+  Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
+  if (!text) return text.error();
+  const std::string err = ext == ".obj" ? check_obj(*text) : ext == ".off" ? check_off(*text) : check_ply(*text);
+  if (!err.empty()) return file_error(ctx.display, err);
+  return std::nullopt;
+}
+
+// Sums the vertices of every mesh under `node` (all of them, as OMPL.app's extractVertices does:
+// points and lines too), node transformations applied.
+void sum_vertices(const aiScene& scene, const aiNode& node, const Affine& parent, Vec3& sum, std::size_t& count) {
+  const Affine world = compose(parent, to_affine(node.mTransformation));
+  for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+    if (node.mMeshes[m] >= scene.mNumMeshes) continue;  // ValidateDataStructure rejects these first
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& a = mesh.mVertices[v];
+      sum += world.leftCols<3>() * Vec3(a.x, a.y, a.z) + world.col(3);
+      ++count;
+    }
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c) sum_vertices(scene, *node.mChildren[c], world, sum, count);
+}
+
+}  // namespace
+
+Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
+  if (auto err = precheck(ctx)) return *err;
   try {
     // COLLADA's <up_axis> is honoured as assimp does by default, and so as OMPL.app does: a Z_UP
     // file's (x, y, z) reads as (x, z, -y), an X_UP file's as (-y, x, z) (ColladaLoader
@@ -434,6 +466,29 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
     return file_error(ctx.display, std::string("assimp: ") + e.what());
   }
   return true;
+}
+
+Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx) {
+  if (auto err = precheck(ctx)) return *err;
+  try {
+    // OMPL.app's RigidBodyGeometry::addRobotMesh reads with exactly these steps (plus the
+    // validation, which changes no vertex). assimp runs them in its own fixed order, whatever the
+    // order of the flags: OptimizeGraph, Triangulate, SortByPType, GenFaceNormals, then
+    // JoinIdenticalVertices, which joins vertices whose position *and* normal agree.
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(
+        ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_GenNormals | aiProcess_Triangulate |
+                               aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_OptimizeGraph);
+    if (scene == nullptr) return file_error(ctx.display, std::string("assimp: ") + importer.GetErrorString());
+    if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
+    Vec3 sum = Vec3::Zero();
+    std::size_t count = 0;
+    sum_vertices(*scene, *scene->mRootNode, Affine::Identity(), sum, count);
+    if (count == 0) return file_error(ctx.display, "contains no vertices");
+    return Vec3(ctx.file_to_output * sum / static_cast<double>(count));
+  } catch (const std::exception& e) {
+    return file_error(ctx.display, std::string("assimp: ") + e.what());
+  }
 }
 
 }  // namespace swept::io_detail

@@ -96,7 +96,13 @@ Result<std::string> read_file_bytes(const std::filesystem::path& file, const std
 
 }  // namespace io_detail
 
-Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options) {
+namespace {
+
+enum class Reader { stl, assimp, cad };
+
+// The checks every reader shares (units, format, deflections, the file itself) and the context
+// the readers get; `reader` is set to the one the extension selects.
+Result<io_detail::ReadContext> prepare(const std::filesystem::path& file, const ImportOptions& options, Reader& reader) {
   using io_detail::file_error;
   const std::string display = file.string();
 
@@ -112,6 +118,7 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   if (!is_cad && !is_assimp && !is_stl)
     return file_error(display, "unknown format '" + (ext.empty() ? std::string("(no extension)") : ext) +
                                    "' (accepted: .stl .obj .ply .off .gltf .glb .dae .step .stp .iges .igs .brep)");
+  reader = is_stl ? Reader::stl : is_assimp ? Reader::assimp : Reader::cad;
 
   // glTF and COLLADA coordinates are metres (glTF by its spec; assimp applies COLLADA's <unit>).
   std::string file_unit = options.file_unit;
@@ -143,6 +150,19 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   ctx.file_to_output = metres_per_file / metres_per_output;
   ctx.metres_per_output = metres_per_output;
   ctx.options = &options;
+  return ctx;
+}
+
+}  // namespace
+
+Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options) {
+  using io_detail::file_error;
+  Reader reader = Reader::stl;
+  Result<io_detail::ReadContext> prepared = prepare(file, options, reader);
+  if (!prepared) return prepared.error();
+  io_detail::ReadContext& ctx = *prepared;
+  const std::string& display = ctx.display;
+  const bool is_stl = reader == Reader::stl, is_assimp = reader == Reader::assimp;
 
   ImportedModel model;
   model.file = display;
@@ -175,6 +195,27 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
     }
   }
   return model;
+}
+
+Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOptions& options) {
+  Reader reader = Reader::stl;
+  Result<io_detail::ReadContext> ctx = prepare(file, options, reader);
+  if (!ctx) return ctx.error();
+  if (reader != Reader::cad) return io_detail::ompl_app_center_with_assimp(*ctx);
+
+  // OMPL.app cannot read CAD files: the nearest rule is the mean of the tessellation's distinct
+  // vertex positions (each corner once, whatever the faces around it).
+  Result<ImportedModel> model = import_mesh(file, options);
+  if (!model) return model.error();
+  std::vector<std::array<double, 3>> corners;
+  for (const TriangleSoup& part : model->parts)
+    for (const Triangle& t : part.triangles)
+      for (int v = 0; v < 3; ++v) corners.push_back({t[v].x(), t[v].y(), t[v].z()});
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  Vec3 sum = Vec3::Zero();
+  for (const auto& c : corners) sum += Vec3(c[0], c[1], c[2]);
+  return Vec3(sum / static_cast<double>(corners.size()));
 }
 
 Result<bool> write_stl_binary(const std::filesystem::path& file, const TriangleSoup& soup) {

@@ -430,8 +430,14 @@ Result<Problem> load_cfg(const fs::path& file) {
       return Error{at(it->second.second) + key + ": " + (fs::exists(m.file, ec) ? "not a file: " : "no such file: ") +
                    m.file.string()};
     m.file_unit = "mm";  // OMPL.app is unit-less: keep the numbers as they are
-    m.center_on_vertex_mean = std::string(key) == "robot";
     m.deflection = p.deflection;
+    if (std::string(key) == "robot") {
+      // OMPL.app's robot frame: the mesh moved so that the mean of its vertices, as OMPL.app's
+      // assimp post-processing joins them, is at the origin (ompl_app_center()).
+      auto center = ompl_app_center(m.file, {.unit = p.unit, .file_unit = m.file_unit, .linear_deflection = m.deflection});
+      if (!center) return Error{at(it->second.second) + key + ": " + center.error().message};
+      m.pose = Pose::from_translation(-*center);
+    }
     (std::string(key) == "robot" ? p.body : p.obstacles).push_back(m);
   }
   p.start = pose("start");

@@ -22,13 +22,8 @@ Result<PlanScene> load_scene(const Problem& problem, Fitter fitter) {
       if (!model) return model.error();
       TriangleSoup soup = model->merged();
       if (soup.triangles.empty()) return Error{ref.file.string() + ": the mesh has no triangles"};
-      Vec3 shift = Vec3::Zero();
-      if (ref.center_on_vertex_mean) {
-        for (const Triangle& t : soup.triangles) shift += t.p + t.q + t.r;
-        shift /= 3.0 * static_cast<double>(soup.triangles.size());
-      }
       for (const Triangle& t : soup.triangles)
-        out.triangles.push_back({ref.pose.apply(t.p - shift), ref.pose.apply(t.q - shift), ref.pose.apply(t.r - shift)});
+        out.triangles.push_back({ref.pose.apply(t.p), ref.pose.apply(t.q), ref.pose.apply(t.r)});
       if (!out.name.empty()) out.name += "+";
       out.name += soup.name;
     }

@@ -497,6 +497,45 @@ TEST(ImportCollada, UnitAndUpAxisAreAppliedAsAssimpDoes) {
   }
 }
 
+// OMPL.app centres a robot on the mean of its vertices as assimp joins them: equal position and
+// equal face normal. Each expected centre below is derived by hand from that rule.
+TEST(OmplAppCenter, MeanOfTheVerticesAssimpJoins) {
+  const auto dir = scratch_dir();
+  // A flat quad A(0,0,0) B(6,0,0) C(6,3,0) D(0,9,0) as triangles ABC, ACD: one normal, so A and C
+  // are joined: (A + B + C + D) / 4 = (3, 3, 0) (the mean of the six corners would be (3, 2.5, 0)).
+  const auto quad = write_file(dir / "quad.obj", "v 0 0 0\nv 6 0 0\nv 6 3 0\nv 0 9 0\nf 1 2 3\nf 1 3 4\n");
+  auto c = ompl_app_center(quad);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  expect_vec(*c, 3, 3, 0, 1e-12);
+  // A folded pair: ABC in z = 0 and ACE in x = 0 with E(0,0,6) and C(0,6,0) now. A and C carry two
+  // normals each, so nothing is joined: (2A + B + 2C + E) / 6 = (1, 2, 1) (distinct positions
+  // alone would give (1.5, 1.5, 1.5)).
+  const auto fold = write_file(dir / "fold.obj", "v 0 0 0\nv 6 0 0\nv 0 6 0\nv 0 0 6\nf 1 2 3\nf 1 3 4\n");
+  c = ompl_app_center(fold);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  expect_vec(*c, 1, 2, 1, 1e-12);
+  // STL through assimp as in OMPL.app: a cube's 12 triangles give 4 joined vertices per face,
+  // 24 in all, whose mean is the cube's centre.
+  TriangleSoup box{"box", box_triangles(Vec3(0, 0, 0), Vec3(2, 4, 8))};
+  ASSERT_TRUE(write_stl_binary(dir / "box.stl", box).ok());
+  c = ompl_app_center(dir / "box.stl");
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  expect_vec(*c, 1, 2, 4, 1e-12);
+  // COLLADA: <unit> and <up_axis> first (Z_UP: (1,2,3) (10,0,0) (0,20,30) read as (1,3,-2)
+  // (10,0,0) (0,30,-20)), then the mean of the three.
+  c = ompl_app_center(write_file(dir / "z.dae", collada_triangle("Z_UP")));
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  expect_vec(*c, 11.0 / 3, 11, -22.0 / 3, 1e-5);
+  // Errors as import_mesh's.
+  expect_error(ompl_app_center(dir / "none.obj"), {(dir / "none.obj").string(), "no such file"});
+  const auto bad = write_file(dir / "bad.obj", "v 0 0 0\nv 6 0 0\nv 0 6 0\nf 1 2 4\n");
+  expect_error(ompl_app_center(bad), {bad.string(), "line 4"});
+  std::string cut = read_bytes(dir / "box.stl");
+  cut.resize(cut.size() - 50);
+  const auto cut_file = write_file(dir / "cut.stl", cut);
+  expect_error(ompl_app_center(cut_file), {cut_file.string(), "truncated binary STL"});
+}
+
 TEST(ImportErrors, MissingUnknownEmptyAndBadUnit) {
   const auto dir = scratch_dir();
   expect_error(import_mesh(dir / "nowhere.stl"), {(dir / "nowhere.stl").string(), "no such file"});

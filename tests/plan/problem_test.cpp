@@ -118,14 +118,14 @@ volume.max.z = 60
   EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->goal->rotation), 1.5707963267948966, 1e-12);
   ASSERT_TRUE(p->bounds);
   EXPECT_DOUBLE_EQ(p->bounds->max.z(), 60);
-  EXPECT_TRUE(p->body[0].center_on_vertex_mean);
   p->clearance = 0.002;
   auto s = load_scene(*p, p->fitter);
   ASSERT_TRUE(s) << s.error().message;
-  // The robot mesh is centred on the mean of its vertices, as OMPL.app does.
-  Vec3 mean = Vec3::Zero();
-  for (const Triangle& t : s->body.triangles) mean += t.p + t.q + t.r;
-  EXPECT_LT((mean / (3.0 * s->body.triangles.size())).norm(), 1e-12);
+  // The robot mesh is centred as OMPL.app centres it: on the mean of its joined vertices, for a
+  // box (the peg) 4 per face, 24 in all, whose mean is the box's centre.
+  EXPECT_LT(bounds(s->body.triangles).center().norm(), 1e-12);
+  EXPECT_TRUE(p->body[0].pose.rotation.isIdentity());
+  EXPECT_EQ(p->reference_point, Vec3::Zero());
   const PlanResult r = plan(*p, *s);
   ASSERT_TRUE(r.solved()) << r.message;
   test::verify_path(*s, r.path, p->clearance);
@@ -320,6 +320,38 @@ goal.axis.x = 0
 goal.axis.y = 0
 goal.axis.z = 1
 )";
+
+// A Z-up COLLADA robot in a .cfg: OMPL.app reads it with assimp's defaults, so the file's
+// (x, y, z) is (x, z, -y), and centres it on the mean of the joined vertices. The triangle
+// (1,2,3) (10,0,0) (0,20,30) [mm] becomes (1,3,-2) (10,0,0) (0,30,-20), centre (11/3, 11, -22/3).
+TEST_F(ProblemFiles, CfgRobotIsCentredAsOmplAppCentresIt) {
+  write("robot.dae", R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="millimeter" meter="0.001"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries><geometry id="g"><mesh>
+    <source id="p"><float_array id="a" count="9">1 2 3 10 0 0 0 20 30</float_array>
+      <technique_common><accessor source="#a" count="3" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
+    <triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p></triangles>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#g"/></node></visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+)");
+  std::string text = kCfg;
+  text.replace(text.find("robot = peg.stl"), 15, "robot = robot.dae");
+  auto p = load_problem(write("dae.cfg", text));
+  ASSERT_TRUE(p) << p.error().message;
+  // COLLADA's <unit> is applied by assimp (metres) and the .cfg keeps OMPL.app's numbers: the
+  // file unit is "mm" for every .cfg mesh, so the millimetre file reads in metres' numbers.
+  const Vec3 centre = -p->body[0].pose.translation;
+  EXPECT_NEAR(centre.x(), 11.0 / 3 * 1e-3, 1e-8);
+  EXPECT_NEAR(centre.y(), 11 * 1e-3, 1e-8);
+  EXPECT_NEAR(centre.z(), -22.0 / 3 * 1e-3, 1e-8);
+}
 
 TEST_F(ProblemFiles, CfgDuplicatesZeroAxesAndNonFiniteNumbersAreErrors) {
   ASSERT_TRUE(load_problem(write("good.cfg", kCfg)));

@@ -69,6 +69,18 @@ struct ImportedModel {
 /// without triangles, non-positive deflections for CAD formats.
 Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options = {});
 
+/// The point OMPL.app centres a robot mesh on before placing it by a `.cfg` pose
+/// (RigidBodyGeometry::getRobotCenter → scene::sceneCenter): the mean of the vertices of every
+/// mesh in the file, node transformations applied, as assimp returns them after OMPL.app's
+/// post-processing aiProcess_GenNormals | Triangulate | JoinIdenticalVertices | SortByPType |
+/// OptimizeGraph. Vertices are joined only where position *and* face normal agree, so a corner
+/// shared by faces of different normals counts once per normal, and a corner inside a flat
+/// region once. STL, OBJ, PLY, OFF, glTF and COLLADA (its <unit> and <up_axis> applied) go
+/// through assimp as in OMPL.app; the mean is summed in double precision (OMPL.app: float).
+/// CAD files, which OMPL.app cannot read, give the mean of the tessellation's distinct vertex
+/// positions. In options.unit, from options.file_unit as import_mesh(); errors as import_mesh().
+Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOptions& options = {});
+
 /// Writes a binary STL (little-endian, float32; normals from the vertex order, zero for
 /// degenerate triangles; an 80-byte header not starting with "solid"). Deterministic bytes
 /// for equal input. Written whole or not at all (write_file_atomically()). Error (nothing

@@ -19,8 +19,6 @@ struct MeshRef {
   Pose pose;
   std::string file_unit;       ///< unit of the file's coordinates; empty: the importer's default
   double deflection = 0.0;     ///< BRepMesh linear deflection for CAD files; 0: problem default
-  /// OMPL.app convention: the mesh is first moved so that the mean of its vertices is at the origin.
-  bool center_on_vertex_mean = false;
 };
 
 enum class RotationMode { none, free, limits };
@@ -47,7 +45,9 @@ struct Problem {
   double deflection = 0.1;        ///< default BRepMesh linear deflection for CAD meshes
 };
 
-/// Reads a problem: `.toml` (our format) or `.cfg` (OMPL.app). Errors name the file and key.
+/// Reads a problem: `.toml` (our format) or `.cfg` (OMPL.app). Errors name the file, the line and
+/// the key. For a `.cfg` the robot mesh is read once here: its pose is the translation by minus
+/// ompl_app_center(), OMPL.app's robot frame, whose origin is the reference point.
 Result<Problem> load_problem(const std::filesystem::path& file);
 
 /// A path: poses of the body frame in the world, in order.
