@@ -130,7 +130,7 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
   cmd->add_option("--fitter", o->fitter, "Override the fitter: pqp | rapid2 | inertia");
   cmd->add_option("--time-limit", o->time_limit, "Override the time limit, seconds")->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", o->threads, "Override the thread count (0: all cores); the path is the same at any count")
+  cmd->add_option("--threads", o->threads, "Override the thread count (0: all cores); the same path at any count (tested: 1, 2, 4, 8)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("-o,--output", o->output, "Write the path: OMPL .path when the name ends in .path, else JSON");
   cmd->add_option("--view", o->view, "Also write a self-contained HTML viewer of the path");

@@ -11,6 +11,7 @@ struct ExitCode {
 
 void add_bvh_command(CLI::App& app);
 void add_plan_command(CLI::App& app);
+void add_check_command(CLI::App& app);
 void add_view_command(CLI::App& app);
 void add_scene_command(CLI::App& app);
 void add_mesh_stats_command(CLI::App& app);

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "swept 0.1.0");
   swept::cli::add_bvh_command(app);
   swept::cli::add_plan_command(app);
+  swept::cli::add_check_command(app);
   swept::cli::add_view_command(app);
   swept::cli::add_scene_command(app);
   swept::cli::add_mesh_stats_command(app);

@@ -60,7 +60,7 @@ struct PathCheckResult {
 /// uses (Schwarzer, Saha, Latombe 2005), and finds the smallest distance along it: exact at every
 /// waypoint and at 15 samples inside each segment, refined by a golden-section search around the
 /// smallest (the certificate guarantees the clearance in between). Segments run in parallel;
-/// the result is the same at any thread count.
+/// the result is the same at any thread count (tested at 1, 2, 4 and 8).
 PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const Path& path,
                            const PathCheckOptions& options = {});
 

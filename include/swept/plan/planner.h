@@ -87,7 +87,7 @@ struct PlanResult {
   struct {
     std::uint64_t distance = 0, tolerance = 0, collide = 0;
   } queries;
-  std::uint64_t path_hash = 0;  ///< FNV-1a over the poses' bytes: equal paths, equal hashes
+  std::uint64_t path_hash = 0;  ///< `path_hash(path)`: equal paths, equal hashes
   int level = 0;                ///< the grid level the path was found at (-1: straight-line phase)
   std::size_t nodes_checked = 0;
   std::size_t edges_checked = 0;
@@ -96,10 +96,13 @@ struct PlanResult {
 };
 
 /// Plans a certified path for the problem. Deterministic: the same problem and scene give the
-/// same path, bit for bit, at any thread count (while the time limit is not reached).
+/// same path, bit for bit, at any thread count while the time limit is not reached
+/// (tested at 1, 2, 4 and 8 threads).
 PlanResult plan(const Problem& problem, const PlanScene& scene, const PlanOptions& options = {});
 
-/// FNV-1a 64 over the bytes of the poses (rotation, then translation, for each pose).
+/// FNV-1a 64 (offset basis 14695981039346656037, prime 1099511628211) over the bytes of the
+/// poses: for each pose the rotation row by row, then the translation, as little-endian IEEE
+/// doubles, −0.0 taken as +0.0.
 std::uint64_t path_hash(const Path& path);
 
 }  // namespace swept
