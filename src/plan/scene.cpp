@@ -69,8 +69,9 @@ Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, Fitter f
 }
 
 std::uint64_t path_hash(const Path& path) {
-  std::uint64_t h = 1469598103934665603ull;
+  std::uint64_t h = 14695981039346656037ull;  // the FNV-1a 64 offset basis
   auto mix = [&](double v) {
+    v += 0.0;  // −0.0 → +0.0: equal poses, equal bytes
     unsigned char bytes[sizeof(double)];
     std::memcpy(bytes, &v, sizeof v);
     for (unsigned char b : bytes) {
