@@ -31,8 +31,12 @@ void expect_ends(const GeneratedProblem& g, const PlanScene& s, const PlanResult
     for (int i = 0; i < 3; ++i) separated = separated || body.min[i] > grown.max[i] || body.max[i] < grown.min[i];
     EXPECT_TRUE(separated) << "the path does not end outside the obstacles' box";
   }
-  EXPECT_GE(r.min_clearance, g.problem.clearance);
+  // The whole path keeps the margin, or after a start in contact every pair but the exempt ones
+  // does along the escape (the reported minimum then includes the start's contact).
+  if (r.escape_segments == 0) EXPECT_GE(r.min_clearance, g.problem.clearance);
+  else EXPECT_GE(r.escape_clearance, g.problem.clearance);
   EXPECT_EQ(r.path_hash, path_hash(r.path));
+  check_independently(s, g.problem, r);
 }
 
 TEST(Planner, PegOutOfBlindHoleWithTightClearance) {
@@ -40,7 +44,6 @@ TEST(Planner, PegOutOfBlindHoleWithTightClearance) {
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   expect_ends(g, s, r);
-  verify_path(s, r.path, g.problem.clearance);
   std::printf("peg: %zu waypoints, %llu distance queries, %.1f ms\n", r.path.poses.size(),
               static_cast<unsigned long long>(r.queries.distance), r.time_ms.total);
 }
@@ -50,7 +53,6 @@ TEST(Planner, SliderOutOfTSlotThenLift) {
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   expect_ends(g, s, r);
-  verify_path(s, r.path, g.problem.clearance);
   // It cannot lift first: the head is under the lips.
   EXPECT_GE(r.path.poses.size(), 3u);
 }
@@ -60,7 +62,6 @@ TEST(Planner, BoxThroughLShapedTunnel) {
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   expect_ends(g, s, r);
-  verify_path(s, r.path, g.problem.clearance);
   EXPECT_GE(r.path.poses.size(), 3u);
 }
 
@@ -69,7 +70,6 @@ TEST(Planner, BarTurnsToPassANarrowSlot) {
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   expect_ends(g, s, r);
-  verify_path(s, r.path, g.problem.clearance);
   EXPECT_GT(r.rotation_length, 0.5) << "the bar must turn to pass";
 }
 
@@ -89,8 +89,8 @@ TEST(Planner, StartTouchingWithContactTolerance) {
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   expect_ends(g, s, r);
-  // After the escape segment (checked with the contact pairs exempt) the path keeps the margin.
-  verify_path(s, r.path, g.problem.clearance, /*skip_first=*/true);
+  EXPECT_EQ(r.escape_segments, 1u);
+  EXPECT_EQ(r.min_clearance, 0.0) << "the peg touches at the start";
   // The escape moves away from the wall and the bottom it touched: after the start, no sample
   // of the escape segment intersects the obstacles.
   for (int k = 1; k <= 1000; ++k) {
@@ -128,16 +128,30 @@ TEST(Planner, StartInCollisionAndGoalOutsideBoundsAreErrors) {
   EXPECT_NE(r.message.find("bounds"), std::string::npos) << r.message;
 }
 
+// The same path, bit for bit, at 1, 2, 4 and 8 threads and across runs: on a problem the
+// straight-line phase solves and on two the grid search solves (with rotation).
 TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
-  const auto g = l_tunnel();
-  const PlanScene s = scene_of(g);
-  std::vector<std::uint64_t> hashes;
-  for (int threads : {1, 2, 1, 2}) {
-    PlanOptions options;
-    options.threads = threads;
-    hashes.push_back(plan(g.problem, s, options).path_hash);
+  for (const auto& g : {l_tunnel(), t_slot(), bar_through_slot()}) {
+    const PlanScene s = scene_of(g);
+    std::vector<std::uint64_t> hashes;
+    std::vector<std::size_t> waypoints;
+    for (int threads : {1, 2, 4, 8, 1, 2}) {
+      PlanOptions options;
+      options.threads = threads;
+      const PlanResult r = plan(g.problem, s, options);
+      ASSERT_TRUE(r.solved()) << g.name << " at " << threads << " threads: " << r.message;
+      EXPECT_EQ(r.path_hash, path_hash(r.path));
+      hashes.push_back(r.path_hash);
+      waypoints.push_back(r.path.poses.size());
+      if (g.name == "bar_through_slot") {
+        EXPECT_GE(r.level, 0) << "the bar's path must come from the grid search";
+      }
+    }
+    for (std::size_t i = 1; i < hashes.size(); ++i) {
+      EXPECT_EQ(hashes[i], hashes[0]) << g.name << ", run " << i;
+      EXPECT_EQ(waypoints[i], waypoints[0]) << g.name << ", run " << i;
+    }
   }
-  for (std::uint64_t h : hashes) EXPECT_EQ(h, hashes[0]);
 }
 
 }  // namespace
