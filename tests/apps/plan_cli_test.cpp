@@ -7,6 +7,7 @@
 #include "plan/plan_support.h"
 #include "support/cli_support.h"
 
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -88,6 +89,29 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   ASSERT_TRUE(ompl);
   EXPECT_EQ(ompl->poses.size(), path->poses.size());
   check_written_path(p, dir / "path.path", figures_of(doc));
+}
+
+TEST_F(PlanCli, TheCheckOfWrittenPathsCanFail) {
+  // The same check on a path through material and on an overstated minimum: each is one
+  // failure, so a planner that wrote either would not pass these tests.
+  const std::string p = problem(scenes::l_tunnel());
+  const fs::path out = dir / "path.json";
+  const CliRun r = run(p + " --json -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto doc = nlohmann::json::parse(r.out);
+  auto path = read_path(out);
+  ASSERT_TRUE(path && path->poses.size() >= 3) << "the tunnel needs a turn";
+  auto problem_read = load_problem(p);
+  ASSERT_TRUE(problem_read);
+  // Straight from start to goal, cutting the tunnel's corner.
+  const fs::path cut = dir / "cut.json";
+  ASSERT_TRUE(write_path(cut, Path{{path->poses.front(), path->poses.back()}}, problem_read->unit,
+                         problem_read->reference_point.value_or(Vec3::Zero())));
+  EXPECT_NONFATAL_FAILURE(check_written_path(p, cut), "the oracle refuses the path");
+  // A minimum 100 mm above what the path comes to (more than the longest segment / 32 allows).
+  test::PlannerFigures overstated = figures_of(doc);
+  *overstated.min_clearance += 100.0;
+  EXPECT_NONFATAL_FAILURE(check_written_path(p, out, overstated), "above the oracle's dense minimum");
 }
 
 TEST_F(PlanCli, StartInContactEscapesAndTheOracleAgrees) {
