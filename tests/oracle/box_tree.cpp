@@ -10,7 +10,7 @@ namespace {
 
 constexpr int kLeafSize = 4;
 
-double box_point_gap_sq(const Box& a, const Box& b, int axis) {
+double axis_gap_sq(const Box& a, const Box& b, int axis) {
   const double g = std::max({0.0, a.lo[axis] - b.hi[axis], b.lo[axis] - a.hi[axis]});
   return g * g;
 }
@@ -28,7 +28,7 @@ Box box_of(const Tri& t) {
 }
 
 double box_gap_sq(const Box& a, const Box& b) {
-  return box_point_gap_sq(a, b, 0) + box_point_gap_sq(a, b, 1) + box_point_gap_sq(a, b, 2);
+  return axis_gap_sq(a, b, 0) + axis_gap_sq(a, b, 1) + axis_gap_sq(a, b, 2);
 }
 
 BoxTree build_tree(const std::vector<Tri>& tris) {
@@ -68,8 +68,7 @@ BoxTree build_tree(const std::vector<Tri>& tris) {
     ext.maxCoeff(&axis);
     const std::int32_t half = r.count / 2;
     auto begin = tree.tri_index.begin() + r.first;
-    // Ties broken by index so the tree does not depend on the library's nth_element details
-    // in a way that changes results (it cannot change distances anyway).
+    // A total order (ties by index): each half holds the same triangles with any standard library.
     std::nth_element(begin, begin + half, begin + r.count, [&](std::int32_t x, std::int32_t y) {
       const double cx = centroid[x][axis], cy = centroid[y][axis];
       return cx < cy || (cx == cy && x < y);
