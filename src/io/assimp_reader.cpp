@@ -9,11 +9,13 @@
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <optional>
@@ -428,6 +430,78 @@ std::optional<Error> precheck(const ReadContext& ctx) {
   return std::nullopt;
 }
 
+// glTF 2: the faces each primitive declares (its index count, or its vertex count without
+// indices, by its mode), one entry per primitive in file order, as assimp's importer makes one
+// mesh per primitive. Empty when the file is not glTF 2 JSON we can read (assimp then reports).
+struct GltfPrimitive {
+  std::string mesh;
+  std::size_t faces = 0;
+  std::size_t vertices = 0;
+};
+
+std::vector<GltfPrimitive> gltf_declared_faces(const std::string& bytes, bool binary) {
+  std::vector<GltfPrimitive> out;
+  std::string_view text = bytes;
+  if (binary) {  // 12-byte header, then the JSON chunk: length, type "JSON", data
+    if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0 || bytes.compare(16, 4, "JSON") != 0) return out;
+    std::uint32_t length = 0;
+    for (int b = 0; b < 4; ++b) length |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[12 + b])) << (8 * b);
+    if (length > bytes.size() - 20) return out;
+    text = std::string_view(bytes).substr(20, length);
+  }
+  const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) return out;
+  try {
+    if (doc.at("asset").at("version").get<std::string>().rfind("2", 0) != 0) return out;
+    const auto& accessors = doc.at("accessors");
+    auto count = [&](const nlohmann::json& index) { return accessors.at(index.get<std::size_t>()).at("count").get<std::size_t>(); };
+    for (const auto& mesh : doc.value("meshes", nlohmann::json::array())) {
+      for (const auto& prim : mesh.at("primitives")) {
+        GltfPrimitive p;
+        p.mesh = mesh.value("name", std::string());
+        p.vertices = count(prim.at("attributes").at("POSITION"));
+        const std::size_t n = prim.contains("indices") ? count(prim.at("indices")) : p.vertices;
+        switch (prim.value("mode", 4)) {
+          case 0: p.faces = n; break;                   // points
+          case 1: p.faces = n / 2; break;               // lines
+          case 2: p.faces = n; break;                   // line loop
+          case 3: p.faces = n > 0 ? n - 1 : 0; break;   // line strip
+          case 4: p.faces = n / 3; break;               // triangles
+          default: p.faces = n > 2 ? n - 2 : 0; break;  // triangle strip, fan
+        }
+        out.push_back(p);
+      }
+    }
+  } catch (const nlohmann::json::exception&) {
+    out.clear();  // malformed: assimp's own error says what
+  }
+  return out;
+}
+
+// assimp's glTF 2 importer drops a face whose index is past the vertex list, with only a log
+// message (and fails only when no face is left): compare what each primitive declares with
+// what assimp kept. "" when they agree or the mapping is unknown.
+std::string check_gltf_faces(const std::string& bytes, bool binary, const aiScene& scene) {
+  const std::vector<GltfPrimitive> declared = gltf_declared_faces(bytes, binary);
+  if (declared.empty() || declared.size() != scene.mNumMeshes) return {};
+  for (std::size_t i = 0; i < declared.size(); ++i) {
+    const std::size_t kept = scene.mMeshes[i]->mNumFaces;
+    if (kept < declared[i].faces)
+      return "mesh '" + declared[i].mesh + "' (primitive " + std::to_string(i) + "): " +
+             std::to_string(declared[i].faces - kept) + " of its " + std::to_string(declared[i].faces) +
+             " faces refer to vertices past its " + std::to_string(declared[i].vertices) + " vertices";
+  }
+  return {};
+}
+
+// assimp's messages may span lines; ours are one line each.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
 // Sums the vertices of every mesh under `node` (all of them, as OMPL.app's extractVertices does:
 // points and lines too), node transformations applied.
 void sum_vertices(const aiScene& scene, const aiNode& node, const Affine& parent, Vec3& sum, std::size_t& count) {
@@ -456,14 +530,21 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
     // ValidateDataStructure rejects face indices past the vertex list (and other broken scenes)
     // before any other step reads them.
     const aiScene* scene = importer.ReadFile(ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate);
-    if (scene == nullptr) return file_error(ctx.display, std::string("assimp: ") + importer.GetErrorString());
+    if (scene == nullptr) return file_error(ctx.display, "assimp: " + one_line(importer.GetErrorString()));
     if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
+    const std::string ext = lower(ctx.file.extension().string());
+    if (ext == ".gltf" || ext == ".glb") {
+      Result<std::string> bytes = read_file_bytes(ctx.file, ctx.display);
+      if (!bytes) return bytes.error();
+      if (std::string err = check_gltf_faces(*bytes, ext == ".glb", *scene); !err.empty())
+        return file_error(ctx.display, err);
+    }
     const std::string stem = ctx.file.stem().string();
     if (std::string err = collect(*scene, *scene->mRootNode, Affine::Identity(), ctx.file_to_output, stem, parts);
         !err.empty())
       return file_error(ctx.display, err);
   } catch (const std::exception& e) {
-    return file_error(ctx.display, std::string("assimp: ") + e.what());
+    return file_error(ctx.display, "assimp: " + one_line(e.what()));
   }
   return true;
 }
@@ -479,7 +560,7 @@ Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx) {
     const aiScene* scene = importer.ReadFile(
         ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_GenNormals | aiProcess_Triangulate |
                                aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_OptimizeGraph);
-    if (scene == nullptr) return file_error(ctx.display, std::string("assimp: ") + importer.GetErrorString());
+    if (scene == nullptr) return file_error(ctx.display, "assimp: " + one_line(importer.GetErrorString()));
     if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
     Vec3 sum = Vec3::Zero();
     std::size_t count = 0;
@@ -487,7 +568,7 @@ Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx) {
     if (count == 0) return file_error(ctx.display, "contains no vertices");
     return Vec3(ctx.file_to_output * sum / static_cast<double>(count));
   } catch (const std::exception& e) {
-    return file_error(ctx.display, std::string("assimp: ") + e.what());
+    return file_error(ctx.display, "assimp: " + one_line(e.what()));
   }
 }
 

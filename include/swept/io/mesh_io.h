@@ -54,19 +54,21 @@ struct ImportedModel {
 
 /// Reads a mesh or CAD file; the format is chosen from the extension (case-insensitive):
 /// .stl → swept's own reader (ASCII and binary, double precision, exact line/triangle errors);
-/// .obj .ply .off .gltf .glb .dae → assimp (aiProcess_ValidateDataStructure and aiProcess_Triangulate
-/// only: degenerate triangles and duplicate vertices are kept); .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly
-/// placements and names; BRepMesh in parallel, deterministic). Part names: STL solid names,
-/// assimp mesh/node names, STEP/IGES product names, "<stem>_solid<k>" for .brep solids;
-/// repeated names get "#2", "#3", ... in file order. Parts without triangles are dropped.
+/// .obj .ply .off .gltf .glb .dae → assimp (aiProcess_ValidateDataStructure and
+/// aiProcess_Triangulate only: degenerate triangles and duplicate vertices are kept);
+/// .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly placements and names; BRepMesh in
+/// parallel, deterministic). Part names: STL solid names, assimp mesh/node names, STEP/IGES
+/// product names, "<stem>_solid<k>" for .brep solids; repeated names get "#2", "#3", ... in file
+/// order. Parts without triangles are dropped.
 ///
-/// Errors (never exceptions), each starting with the file as given: unknown output/file unit
-/// (with the accepted list), unknown extension, missing file, empty file, a binary STL whose size is
-/// not exactly 84 + 50 · count ("header says N triangles, file holds M", truncated or with extra records), malformed ASCII STL/OBJ/OFF/PLY ("line L: ..."), a face
-/// index past the vertex list (OBJ, OFF, PLY with the line; any assimp format with the mesh and face),
-/// non-finite coordinates ("triangle I has a non-finite coordinate", I 0-based within its part,
-/// or the line for ASCII formats), unreadable STEP/IGES (with the failing entities), a file
-/// without triangles, non-positive deflections for CAD formats.
+/// Errors (never exceptions), each one line starting with the file as given: unknown output/file
+/// unit (with the accepted list), unknown extension, missing file, empty file, a binary STL whose
+/// size is not exactly 84 + 50 · count ("header says N triangles, file holds M", truncated or
+/// with extra records), malformed ASCII STL/OBJ/OFF/PLY ("line L: ..."), a face index past the
+/// vertex list (OBJ, OFF, PLY with the line; glTF with the mesh and how many faces; any assimp
+/// format with the mesh and face), non-finite coordinates ("triangle I has a non-finite
+/// coordinate", I 0-based within its part, or the line for ASCII formats), unreadable STEP/IGES
+/// (with the failing entities), a file without triangles, non-positive deflections for CAD formats.
 Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options = {});
 
 /// The point OMPL.app centres a robot mesh on before placing it by a `.cfg` pose
