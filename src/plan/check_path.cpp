@@ -113,6 +113,17 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     }
   });
 
+  // Solids overlapping with their surfaces apart (a body inside a closed part): decided at the
+  // first waypoint whose surfaces do not touch; the certified motions never cross a surface, so
+  // that answer holds for the whole path.
+  std::optional<std::string> inside;
+  for (std::size_t w = 0; w < poses.size() && !inside; ++w)
+    if (at_waypoint[w] > 0.0) {
+      inside = enclosure_at(scene, poses[w]);
+      if (inside) *inside = "at waypoint " + std::to_string(w) + " " + *inside;
+      break;
+    }
+
   // Results read in order: the same at any thread count.
   out.min_clearance = at_waypoint[0];
   out.min_pose = poses[0];
@@ -134,7 +145,17 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
   }
   out.distance_queries = check.distance_queries.load();
   std::ostringstream os;
-  if (segments == 0) {
+  if (inside) {
+    out.valid = false;
+    out.min_clearance = 0.0;
+    out.min_segment = 0;
+    out.min_t = 0.0;
+    out.min_pose = poses[0];
+    out.first_bad_segment = 0;
+    out.first_bad_pose = poses[0];
+    out.first_bad_distance = 0.0;
+    os << "not valid: " << *inside;
+  } else if (segments == 0) {
     out.valid = at_waypoint[0] > margin;
     os << (out.valid ? "valid: a single pose, " : "not valid: a single pose ") << "at distance " << at_waypoint[0]
        << " (clearance " << margin << ")";

@@ -542,6 +542,10 @@ PlanResult Planner::run() {
       os << "the goal pose is closer than the clearance " << margin << " to the obstacles (distance " << dg << ")";
       return fail(PlanStatus::invalid_goal, os.str());
     }
+    if (auto inside = enclosure_at(sc_, *pb_.goal)) return fail(PlanStatus::invalid_goal, "the goal pose is in collision: " + *inside);
+  }
+  if (start_distance_ > margin) {
+    if (auto inside = enclosure_at(sc_, start_)) return fail(PlanStatus::invalid_start, "the start pose is in collision: " + *inside);
   }
   if (start_distance_ <= margin) {
     if (pb_.contact_tolerance <= 0.0) {

@@ -2,9 +2,12 @@
 #include "swept/io/mesh_io.h"
 #include "swept/plan/planner.h"
 
+#include "swept/geometry/solid.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 namespace swept {
 
@@ -64,8 +67,46 @@ Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, Fitter f
   for (const Triangle& t : scene.body.triangles)
     for (int v = 0; v < 3; ++v) r2 = std::max(r2, (t[v] - scene.reference).squaredNorm());
   scene.radius = std::sqrt(r2);
+  scene.obstacle_parts = surface_parts(scene.obstacles.triangles);
+  scene.body_parts = surface_parts(scene.body.triangles);
   scene.build_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
   return scene;
+}
+
+std::optional<std::string> enclosure_at(const PlanScene& scene, const Pose& pose) {
+  const auto& body = scene.body.triangles;
+  const auto& obstacles = scene.obstacles.triangles;
+  auto inside_box = [](const Aabb& b, const Vec3& p) {
+    return (p.array() >= b.min.array()).all() && (p.array() <= b.max.array()).all();
+  };
+  // Surfaces apart, so one vertex of a part tells whether the whole part is inside.
+  for (std::size_t o = 0; o < scene.obstacle_parts.size(); ++o) {
+    const SurfacePart& op = scene.obstacle_parts[o];
+    if (!op.closed) continue;
+    for (std::size_t b = 0; b < scene.body_parts.size(); ++b) {
+      const Vec3 p = pose.apply(body[scene.body_parts[b].triangles.front()].p);
+      if (inside_box(op.box, p) && inside_closed(obstacles, op.triangles, p)) {
+        std::ostringstream os;
+        os << "the body is inside a closed obstacle surface (the part of " << op.triangles.size()
+           << " triangles starting at obstacle triangle " << op.triangles.front() << ")";
+        return os.str();
+      }
+    }
+  }
+  for (std::size_t b = 0; b < scene.body_parts.size(); ++b) {
+    const SurfacePart& bp = scene.body_parts[b];
+    if (!bp.closed) continue;
+    for (std::size_t o = 0; o < scene.obstacle_parts.size(); ++o) {
+      const Vec3 p = pose.apply_inverse(obstacles[scene.obstacle_parts[o].triangles.front()].p);
+      if (inside_box(bp.box, p) && inside_closed(body, bp.triangles, p)) {
+        std::ostringstream os;
+        os << "an obstacle is inside the body's closed surface (the obstacle part starting at triangle "
+           << scene.obstacle_parts[o].triangles.front() << ")";
+        return os.str();
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 std::uint64_t path_hash(const Path& path) {

@@ -8,6 +8,7 @@
 /// (Schwarzer, Saha, Latombe 2005): the distance stays ≥ the clearance margin along the whole
 /// continuous motion.
 #include "swept/bvh/bvh.h"
+#include "swept/geometry/solid.h"
 #include "swept/plan/problem.h"
 
 #include <cstdint>
@@ -28,6 +29,8 @@ struct PlanScene {
   Vec3 reference = Vec3::Zero();  ///< body-frame point the motions interpolate about
   double radius = 0.0;            ///< max distance from `reference` to a body vertex
   Aabb obstacle_box;              ///< world bounding box of the obstacles
+  std::vector<SurfacePart> obstacle_parts;  ///< connected parts of the obstacles, closed or not
+  std::vector<SurfacePart> body_parts;      ///< connected parts of the body (body frame)
   double load_ms = 0.0;           ///< reading and tessellating the meshes
   double build_ms = 0.0;          ///< building both trees
 };
@@ -39,6 +42,12 @@ Result<PlanScene> load_scene(const Problem& problem, Fitter fitter);
 /// A scene from meshes already in memory (obstacles in the world, body in the body frame).
 Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, Fitter fitter,
                              std::optional<Vec3> reference_point = std::nullopt);
+
+/// At `pose`, is a part of the body inside a closed part of the obstacles, or an obstacle part
+/// inside a closed part of the body? Then the solids overlap although their surfaces may be far
+/// apart (the distance queries measure between surfaces). Returns what is inside what, or
+/// nullopt. Meaningful when the surfaces do not touch at `pose`.
+std::optional<std::string> enclosure_at(const PlanScene& scene, const Pose& pose);
 
 /// Reported while planning (about once a second) for the progress line.
 struct PlanProgress {

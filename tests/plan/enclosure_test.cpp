@@ -1,0 +1,85 @@
+// A body wholly inside a closed part (or a part inside the closed body) is in collision although
+// the surfaces are far apart: the planner refuses such a start or goal as bad input, and
+// check_path refuses a path that starts so. A room modelled from the inside is free space.
+#include "plan/plan_support.h"
+#include "swept/plan/check.h"
+
+namespace swept {
+namespace {
+
+using namespace swept::test;
+using scenes::add_box;
+using scenes::GeneratedProblem;
+
+GeneratedProblem block_and_cube() {
+  GeneratedProblem g;
+  g.name = "block_and_cube";
+  add_box(g.obstacles.triangles, Vec3(10, -10, -10), Vec3(30, 10, 10));  // a solid block
+  add_box(g.body.triangles, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  g.problem.start = Pose::from_translation(Vec3(0, 0, 0));
+  g.problem.goal = Pose::from_translation(Vec3(0, 0, 20));
+  g.problem.clearance = 0.1;
+  g.problem.rotation = RotationMode::none;
+  g.problem.time_limit = 10;
+  return g;
+}
+
+TEST(Enclosure, StartInsideAClosedPartIsInCollision) {
+  auto g = block_and_cube();
+  g.problem.start = Pose::from_translation(Vec3(20, 0, 0));  // 8 from every face of the block
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_start) << r.message;
+  EXPECT_NE(r.message.find("in collision"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("inside"), std::string::npos) << r.message;
+}
+
+TEST(Enclosure, GoalInsideAClosedPartIsInCollision) {
+  auto g = block_and_cube();
+  g.problem.goal = Pose::from_translation(Vec3(20, 0, 0));
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_goal) << r.message;
+  EXPECT_NE(r.message.find("inside"), std::string::npos) << r.message;
+}
+
+TEST(Enclosure, AnObstacleInsideTheBodyIsInCollision) {
+  GeneratedProblem g = block_and_cube();
+  g.obstacles.triangles.clear();
+  add_box(g.obstacles.triangles, Vec3(-0.2, -0.2, -0.2), Vec3(0.2, 0.2, 0.2));  // inside the cube
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_start) << r.message;
+  EXPECT_NE(r.message.find("inside the body"), std::string::npos) << r.message;
+}
+
+TEST(Enclosure, ARoomModelledFromTheInsideIsFreeSpace) {
+  GeneratedProblem g = block_and_cube();
+  g.obstacles.triangles.clear();
+  add_box(g.obstacles.triangles, Vec3(-30, -30, -30), Vec3(30, 30, 30));
+  for (Triangle& t : g.obstacles.triangles) std::swap(t.q, t.r);  // normals into the room
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  check_independently(s, g.problem, r);
+}
+
+TEST(Enclosure, CheckPathRefusesAPathStartingInside) {
+  auto g = block_and_cube();
+  const PlanScene s = scene_of(g);
+  // From inside the block to inside it elsewhere: no surface is crossed, every segment's
+  // certificate holds, and yet the body is in the solid all along.
+  Path p{{Pose::from_translation(Vec3(15, 0, 0)), Pose::from_translation(Vec3(25, 0, 0))}};
+  const PathCheckResult c = check_path(g.problem, s, p);
+  EXPECT_FALSE(c.valid) << c.message;
+  EXPECT_NE(c.message.find("inside"), std::string::npos) << c.message;
+  EXPECT_EQ(c.min_clearance, 0.0);
+  // A motion outside the block: the cube's face reaches x = 6, 4 short of the block's face x = 10.
+  Path q{{Pose::from_translation(Vec3(0, 0, 0)), Pose::from_translation(Vec3(5, 0, 0))}};
+  const PathCheckResult d = check_path(g.problem, s, q);
+  EXPECT_TRUE(d.valid) << d.message;
+  EXPECT_NEAR(d.min_clearance, 4.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace swept
