@@ -15,7 +15,8 @@
 # log to build/fuzz/scratch/logs/<target>.log, the table printed to build/fuzz/scratch/summary.txt.
 # Prints per target the executions and the outcome; exits 1 if any target found something.
 # SWEPT_FUZZ_NICE (default 10) sets the runs' niceness, SWEPT_FUZZ_JOBS (default: all cores)
-# the build's parallelism.
+# the build's parallelism, SWEPT_FUZZ_SCRATCH another folder than build/fuzz/scratch (for two
+# runs at once).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -54,7 +55,7 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j"${SWEPT_FUZZ_JOBS:-$(nproc)}"
 
 build=build/fuzz
-scratch=$build/scratch
+scratch=${SWEPT_FUZZ_SCRATCH:-$build/scratch}
 mapfile -t targets < "$build/fuzz/targets.txt"
 if [ ${#only[@]} -gt 0 ]; then targets=("${only[@]}"); fi
 
