@@ -18,13 +18,22 @@ struct Pose {
 
   static Pose identity() { return {}; }
   static Pose from_translation(const Vec3& t) { return {Mat3::Identity(), t}; }
-  /// From a (not necessarily normalised) quaternion and a translation.
+  /// From a (not necessarily normalised) quaternion and a translation. The components are
+  /// scaled by the largest first, so huge or tiny ones neither overflow nor underflow the norm;
+  /// an all-zero or non-finite quaternion gives the identity (callers that read files reject
+  /// those with a message first).
   static Pose from_quaternion(const Quat& q, const Vec3& t) {
-    return {q.normalized().toRotationMatrix(), t};
+    const double big = q.coeffs().cwiseAbs().maxCoeff();
+    if (!(big > 0.0) || !std::isfinite(big)) return {Mat3::Identity(), t};
+    const Quat u(q.coeffs() / big);
+    return {u.normalized().toRotationMatrix(), t};
   }
-  /// From an axis (any length > 0) and an angle in radians, and a translation.
+  /// From an axis (any length > 0, scaled like the quaternion) and an angle in radians, and a
+  /// translation. A zero or non-finite axis gives the identity rotation.
   static Pose from_axis_angle(const Vec3& axis, double angle, const Vec3& t) {
-    return {Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(), t};
+    const double big = axis.cwiseAbs().maxCoeff();
+    if (!(big > 0.0) || !std::isfinite(big)) return {Mat3::Identity(), t};
+    return {Eigen::AngleAxisd(angle, (axis / big).normalized()).toRotationMatrix(), t};
   }
   Quat quaternion() const { return Quat(rotation).normalized(); }
 };
