@@ -225,7 +225,7 @@ void run(const BenchQueriesOptions& o) {
       j["sets"].push_back({{"name", sets[s].name}, {"poses", sets[s].poses.size()}, {"results", results}});
     }
     j["max_rel_distance_diff_vs_fcl"] = max_rel_diff;
-    std::cout << j.dump(2) << "\n";
+    std::cout << json_text(j, 2) << "\n";
     std::cerr << "batch of " << batch.size() << " distance queries: " << fmt_fixed(t1 * 1e3, 1) << " ms on 1 thread, "
               << fmt_fixed(t2 * 1e3, 1) << " ms on 2 threads, speedup " << fmt_fixed(t1 / t2, 2) << "x\n";
     return;

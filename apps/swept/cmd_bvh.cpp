@@ -103,7 +103,7 @@ void run(const BvhOptions& o) {
     meshes.push_back(entry);
   }
   if (o.json) {
-    std::cout << nlohmann::json{{"meshes", meshes}}.dump(2) << "\n";
+    std::cout << json_text(nlohmann::json{{"meshes", meshes}}, 2) << "\n";
   } else if (o.markdown) {
     std::cout << md.str();
   } else {

@@ -58,7 +58,7 @@ void run(const MeshStatsOptions& o) {
                       {"aspect_ratio_over_10_fraction", s.aspect_over_10}});
   }
   if (o.json) {
-    std::cout << nlohmann::json{{"meshes", meshes}}.dump(2) << "\n";
+    std::cout << json_text(nlohmann::json{{"meshes", meshes}}, 2) << "\n";
   } else if (o.markdown) {
     std::cout << md;
   } else {

@@ -28,7 +28,7 @@ void list_scenes(bool json) {
     for (const scenes::SceneInfo& s : scenes::catalog())
       arr.push_back({{"name", s.name}, {"summary", s.summary}, {"paper_body_triangles", s.paper_body_triangles},
                      {"paper_obstacle_triangles", s.paper_obstacle_triangles}});
-    std::cout << nlohmann::json{{"scenes", arr}}.dump(2) << "\n";
+    std::cout << json_text(nlohmann::json{{"scenes", arr}}, 2) << "\n";
     return;
   }
   for (const scenes::SceneInfo& s : scenes::catalog()) {
@@ -53,7 +53,7 @@ void run(const SceneOptions& o) {
     nlohmann::json files = nlohmann::json::array();
     for (const scenes::MeshFile& f : r.meshes)
       files.push_back({{"file", f.file}, {"role", f.body ? "body" : "obstacle"}, {"triangles", f.triangles}});
-    std::cout << nlohmann::json{{"scene", r.name},
+    std::cout << json_text(nlohmann::json{{"scene", r.name},
                                 {"scale", o.scale},
                                 {"problem", r.problem_file.string()},
                                 {"meshes", files},
@@ -65,8 +65,8 @@ void run(const SceneOptions& o) {
                                 {"obstacle_deflection_mm", r.obstacle_deflection},
                                 {"angular_deflection_rad", r.angular_deflection},
                                 {"tessellations", r.tessellations},
-                                {"seconds", r.seconds}}
-                     .dump(2)
+                                {"seconds", r.seconds}},
+                           2)
               << "\n";
     return;
   }

@@ -185,7 +185,7 @@ Pose pose_at(const Path& path, const std::vector<double>& s, double u, const Vec
 std::string json_for_script(const nlohmann::json& doc) {
   // Inside <script>, "</script" or "<!--" would end or confuse the element: '<' only occurs in
   // JSON strings, where \u003c means the same.
-  const std::string text = doc.dump();
+  const std::string text = json_text(doc);
   std::string out;
   out.reserve(text.size() + 64);
   for (char c : text) {
@@ -252,7 +252,8 @@ void write_view(const Problem& problem, const PlanScene& scene, const Path& path
                          {"quaternion", {q.x(), q.y(), q.z(), q.w()}}});
   }
 
-  const std::string title = problem.source.empty() ? std::string("swept") : problem.source.filename().string();
+  // File names need not be UTF-8 (POSIX allows any byte but '/' and NUL); the page and its JSON must be.
+  const std::string title = valid_utf8(problem.source.empty() ? std::string("swept") : problem.source.filename().string());
   const nlohmann::json doc{
       {"format", 1},
       {"title", title},

@@ -2,6 +2,8 @@
 /// Small helpers for the CLI: aligned tables, number formatting, writing output files.
 #include "swept/io/file_write.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -60,6 +62,20 @@ inline std::string fmt_int(std::size_t v) { return std::to_string(v); }
 /// file and the reason, which the CLI turns into exit code 1.
 inline void write_output(const std::string& file, std::string_view bytes) {
   if (auto written = write_file_atomically(file, bytes); !written) throw std::runtime_error(written.error().message);
+}
+
+/// The text of a JSON document we write (stdout, results.json, the viewer's embedded scene).
+/// Strings that are not valid UTF-8 — a file name with a byte such as 0xff, which POSIX allows —
+/// carry U+FFFD in place of each invalid byte sequence, where nlohmann::json would throw
+/// type_error 316. indent < 0: compact; else that many spaces per level.
+inline std::string json_text(const nlohmann::json& doc, int indent = -1) {
+  return doc.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+/// `text` as valid UTF-8, each invalid byte sequence replaced by U+FFFD (as json_text() does),
+/// for text written outside JSON, such as an HTML title made from a file name.
+inline std::string valid_utf8(const std::string& text) {
+  return nlohmann::json::parse(json_text(nlohmann::json(text))).get<std::string>();
 }
 
 }  // namespace swept::cli
