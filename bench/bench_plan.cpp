@@ -31,6 +31,7 @@
 // swept's side: PlanResult from plan() on a prebuilt scene (tree build reported apart), once
 // per fitter (pqp, rapid2, inertia), and the problem's fitter as many times as OMPL has seeds
 // (at least twice): its median time is the one compared, and every run must give the same path.
+#include "swept/io/file_write.h"
 #include "swept/plan/planner.h"
 #include "swept/plan/problem.h"
 #include "swept/query/query.h"
@@ -111,6 +112,7 @@ std::string status_name(PlanStatus s) {
     case PlanStatus::no_path_resolution: return "no path (resolution)";
     case PlanStatus::invalid_start: return "invalid start";
     case PlanStatus::invalid_goal: return "invalid goal";
+    case PlanStatus::invalid_bounds: return "invalid bounds";
   }
   return "?";
 }
@@ -724,9 +726,11 @@ int main(int argc, char** argv) {
     rows.push_back(run_case(c, limit, seeds, threads, collide_only));
     if (!rows.back().error.empty()) std::fprintf(stderr, "  not run: %s\n", rows.back().error.c_str());
     if (!json_file.empty()) {  // rewritten after every problem, so a long run leaves partial results
-      std::ofstream out(json_file);
-      out << to_json(rows, limit, seeds, threads, collide_only).dump(2) << "\n";
-      if (!out) std::fprintf(stderr, "bench_plan: cannot write %s\n", json_file.c_str());
+      // Whole or not at all (a temporary file renamed into place); invalid UTF-8 in names becomes U+FFFD.
+      const std::string text =
+          to_json(rows, limit, seeds, threads, collide_only).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+      if (auto written = write_file_atomically(json_file, text); !written)
+        std::fprintf(stderr, "bench_plan: %s\n", written.error().message.c_str());
     }
   }
   print_tables(rows, limit, seeds, threads, collide_only);

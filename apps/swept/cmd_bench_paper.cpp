@@ -264,6 +264,7 @@ std::string status_name(PlanStatus s) {
     case PlanStatus::no_path_resolution: return "no path (resolution)";
     case PlanStatus::invalid_start: return "invalid start";
     case PlanStatus::invalid_goal: return "invalid goal";
+    case PlanStatus::invalid_bounds: return "invalid bounds";
   }
   return "unknown";
 }
@@ -913,13 +914,13 @@ T get_or(const nlohmann::json& j, const char* key, T fallback) {
 
 Fitter fitter_from(const nlohmann::json& j, const std::string& file) {
   Fitter f;
-  if (!parse_fitter(j.get<std::string>(), f)) throw std::runtime_error(file + ": unknown fitter " + j.dump());
+  if (!parse_fitter(j.get<std::string>(), f)) throw std::runtime_error(file + ": unknown fitter " + json_text(j));
   return f;
 }
 
 SplitRule split_from(const nlohmann::json& j, const std::string& file) {
   SplitRule s;
-  if (!parse_split_rule(j.get<std::string>(), s)) throw std::runtime_error(file + ": unknown split rule " + j.dump());
+  if (!parse_split_rule(j.get<std::string>(), s)) throw std::runtime_error(file + ": unknown split rule " + json_text(j));
   return s;
 }
 
@@ -1027,18 +1028,13 @@ std::string write_outputs(const Results& res, const PaperOptions& o, const fs::p
   const std::string date = utc_now(), machine = machine_description();
   std::vector<std::string> plots;
   write_plots(res, out / "img", plots);
-  {
-    std::ofstream f(out / "results.json");
-    nlohmann::json j = results_json(res, o, date, machine);
-    j["complete"] = final_write;
-    f << j.dump(2) << "\n";
-    if (!f) throw std::runtime_error((out / "results.json").string() + ": cannot write");
-  }
+  // Whole or not at all: an interrupted run keeps the previous complete results.json/report.md.
+  nlohmann::json j = results_json(res, o, date, machine);
+  j["complete"] = final_write;
+  write_output((out / "results.json").string(), json_text(j, 2) + "\n");
   std::string md = markdown_report(res, o, date, machine, plots);
   if (!final_write) md = "> **Partial results**: the run was still going when this was written.\n\n" + md;
-  std::ofstream f(out / "report.md");
-  f << md;
-  if (!f) throw std::runtime_error((out / "report.md").string() + ": cannot write");
+  write_output((out / "report.md").string(), md);
   if (final_write)
     std::cerr << "bench paper: wrote " << (out / "results.json").string() << ", " << (out / "report.md").string()
               << " and " << plots.size() << " plots in " << (out / "img").string() << "\n";
