@@ -55,7 +55,8 @@ void run(const PlanCliOptions& o) {
   const PlanResult r = plan(*problem, *scene, options);
   if (tty) std::fprintf(stderr, "\r%60s\r", "");
 
-  if (r.status == PlanStatus::invalid_start || r.status == PlanStatus::invalid_goal)
+  if (r.status == PlanStatus::invalid_start || r.status == PlanStatus::invalid_goal ||
+      r.status == PlanStatus::invalid_bounds)
     throw std::runtime_error(o.problem + ": " + r.message);
 
   if (r.solved() && !o.output.empty()) {

@@ -91,7 +91,10 @@ class Checker {
       if (len < (p.d0 - margin_) + (p.d1 - margin_)) continue;
       // The certificate needs this piece split: too many pieces means the motion grazes the
       // margin; refuse rather than loop.
-      if (++queries > kMaxQueriesPerEdge || p.t1 - p.t0 < 1e-9) return false;
+      if (++queries > kMaxQueriesPerEdge || p.t1 - p.t0 < 1e-9) {
+        ++cap_refusals;
+        return false;
+      }
       // Past the search's deadline a long certificate gives up (conservatively: not free).
       if ((queries & 63) == 0 && deadline_ && Clock::now() > *deadline_) return false;
       const double tm = 0.5 * (p.t0 + p.t1);
@@ -112,6 +115,9 @@ class Checker {
   void set_deadline(std::optional<Clock::time_point> t) { deadline_ = t; }
 
   mutable std::atomic<std::uint64_t> distance_queries{0};
+  /// Motions refused because certifying them needed more than kMaxQueriesPerEdge queries (or
+  /// pieces below the parameter resolution): they graze the margin.
+  mutable std::atomic<std::uint64_t> cap_refusals{0};
   static constexpr int kMaxQueriesPerEdge = 200000;
 
  private:

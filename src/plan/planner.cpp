@@ -521,6 +521,24 @@ PlanResult Planner::run() {
     if (r.time_ms.search == 0.0) r.time_ms.search = r.time_ms.total;
     return r;
   };
+  // Coordinates far beyond the scene lose the precision the distance bounds rely on (a query at
+  // 1e100 visits every pair and takes seconds, so no time limit holds): the bounds, the start,
+  // the goal and the goal region must stay within 10^6 scene sizes.
+  {
+    Aabb reach = bounds_;
+    reach.extend(sc_.obstacle_box);
+    reach.extend(goal_box_);
+    reach.extend(ref(pb_.start));
+    if (pb_.goal) reach.extend(ref(*pb_.goal));
+    const double across = (reach.max - reach.min).maxCoeff();
+    if (!(across <= 1e6 * size)) {
+      std::ostringstream os;
+      os << "the bounds, start, goal and goal margin span " << across << " " << pb_.unit << ", more than 10^6 times the scene's size ("
+         << size << " " << pb_.unit << "): coordinates that far apart lose the precision the certificate needs; check [bounds], "
+         << "[start], [goal] and goal.margin";
+      return fail(PlanStatus::invalid_bounds, os.str());
+    }
+  }
   if (!in_bounds(ref(pb_.start))) return fail(PlanStatus::invalid_start, "the start's reference point is outside the bounds");
   if (pb_.goal && !in_bounds(ref(*pb_.goal))) return fail(PlanStatus::invalid_goal, "the goal's reference point is outside the bounds");
   if (pb_.goal_outside) {
@@ -560,7 +578,7 @@ PlanResult Planner::run() {
                           .pairs);
     Pose escape;
     if (!find_escape(escape)) {
-      return fail(out_of_time() ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
+      return fail(out_of_time() && check_.cap_refusals.load() == 0 ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
                   "the body starts in contact and no straight escape (along the world axes, the body's axes "
                   "or toward the goal) reaches a pose with the full clearance");
     }
@@ -604,6 +622,14 @@ PlanResult Planner::run() {
   if (!found) {
     if (out_of_time()) why = PlanStatus::no_path_time;
     std::ostringstream os;
+    if (const std::uint64_t refused = check_.cap_refusals.load(); refused > 0) {
+      // The limiting factor was the resolution of the certificate, whatever the clock says.
+      os << "no path found: " << refused << " motion" << (refused == 1 ? " grazes" : "s graze")
+         << " the clearance too closely to certify (more than " << Checker::kMaxQueriesPerEdge
+         << " distance queries each; a smaller clearance or a wider passage helps)";
+      if (why == PlanStatus::no_path_time) os << ", and the search then reached the time limit of " << time_limit_ << " s";
+      return fail(PlanStatus::no_path_resolution, os.str());
+    }
     switch (why) {
       case PlanStatus::no_path_time: os << "no path found within the time limit of " << time_limit_ << " s"; break;
       case PlanStatus::no_path_bounds:

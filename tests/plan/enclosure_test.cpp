@@ -83,3 +83,47 @@ TEST(Enclosure, CheckPathRefusesAPathStartingInside) {
 
 }  // namespace
 }  // namespace swept
+
+namespace swept {
+namespace {
+
+using namespace swept::test;
+using scenes::add_box;
+
+// A cube (half width 3.5) held by its bounds at 1.5 above a floor: every motion it may make
+// slides along the floor 1.5 from it. With a clearance 1e-7 below that, each one grazes it: no
+// certificate fits in the query cap, and the answer names that limit, not the clock.
+TEST(PlannerLimits, GrazingMotionsAreRefusedAsResolution) {
+  scenes::GeneratedProblem g;
+  g.name = "grazing";
+  add_box(g.obstacles.triangles, Vec3(-50, -50, -10), Vec3(50, 50, -5));  // floor
+  add_box(g.body.triangles, Vec3(-3.5, -3.5, -3.5), Vec3(3.5, 3.5, 3.5));
+  g.problem.start = Pose::from_translation(Vec3(-20, 0, 0));
+  g.problem.goal = Pose::from_translation(Vec3(20, 0, 0));
+  g.problem.clearance = 1.5 - 1e-7;
+  g.problem.rotation = RotationMode::none;
+  g.problem.bounds = Aabb{Vec3(-45, -2, 0), Vec3(45, 2, 0)};
+  g.problem.time_limit = 3;  // one refused certificate takes about a second here
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::no_path_resolution) << r.message;
+  EXPECT_NE(r.message.find("graze"), std::string::npos) << r.message;
+}
+
+TEST(PlannerLimits, BoundsFarBeyondTheSceneAreBadInput) {
+  auto g = scenes::l_tunnel();
+  g.problem.bounds = Aabb{Vec3::Constant(-1e300), Vec3::Constant(1e300)};
+  const PlanScene s = scene_of(g);
+  PlanResult r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_bounds) << r.message;
+  EXPECT_NE(r.message.find("10^6"), std::string::npos) << r.message;
+  // A start far away with automatic bounds: the same.
+  g = scenes::l_tunnel();
+  g.problem.bounds.reset();
+  g.problem.start = Pose::from_translation(Vec3(1e100, 0, 0));
+  r = plan(g.problem, s);
+  EXPECT_EQ(r.status, PlanStatus::invalid_bounds) << r.message;
+}
+
+}  // namespace
+}  // namespace swept

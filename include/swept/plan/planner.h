@@ -71,6 +71,7 @@ enum class PlanStatus {
   no_path_resolution,  ///< the finest resolution was searched without a path
   invalid_start,       ///< start outside bounds or closer than the clearance (bad input)
   invalid_goal,        ///< goal outside bounds or closer than the clearance (bad input)
+  invalid_bounds,      ///< bounds (or start, goal, goal margin) too far from the scene for its precision (bad input)
 };
 
 struct PlanResult {
