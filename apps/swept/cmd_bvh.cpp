@@ -27,6 +27,7 @@ struct BvhOptions {
   std::string split = "min-sa";
   double deflection = 0.1;
   double angular_deflection = 0.5;
+  std::size_t max_triangles = ImportOptions{}.max_triangles;
   std::string unit = "mm";
   std::string file_unit;
   int leaf_size = 1;
@@ -68,6 +69,7 @@ void run(const BvhOptions& o) {
     io.file_unit = o.file_unit;
     io.linear_deflection = o.deflection;
     io.angular_deflection = o.angular_deflection;
+    io.max_triangles = o.max_triangles;
     auto model = import_mesh(file, io);
     if (!model) throw std::runtime_error(model.error().message);
     const TriangleSoup soup = model->merged();
@@ -128,6 +130,9 @@ void add_bvh_command(CLI::App& app) {
   cmd->add_option("--deflection", o->deflection, "BRepMesh linear deflection for CAD files, in --unit")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--angular-deflection", o->angular_deflection, "BRepMesh angular deflection for CAD files, radians")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--max-triangles", o->max_triangles,
+                  "Most triangles a CAD file may tessellate into (estimated before meshing; past it: exit 1)")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--unit", o->unit, "Length unit of the output: m, cm, mm, um, in, ft")->capture_default_str();
   cmd->add_option("--file-unit", o->file_unit, "Unit of mesh files' coordinates (default mm; CAD files carry their own)");

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <new>
 #include <optional>
 #include <string_view>
 
@@ -325,6 +326,7 @@ std::string check_ply(const std::string& bytes) {
 
   const bool little = format == "binary_little_endian";
   for (const PlyElement& e : elements) {
+    if (e.properties.empty()) continue;  // takes no bytes, however many it declares
     for (long long i = 0; i < e.count; ++i) {
       for (const PlyProperty& p : e.properties) {
         std::size_t need = static_cast<std::size_t>(p.count_size > 0 ? p.count_size : p.size);
@@ -350,6 +352,28 @@ std::string check_ply(const std::string& bytes) {
         }
         pos += need;
       }
+    }
+  }
+  return {};
+}
+
+// COLLADA: every count attribute (float_array, accessor, triangles, polylist, ...) counts items
+// that take at least one byte each in the file, so a count above the file's size is a lie; assimp
+// would reserve memory for it first (std::bad_alloc, or gigabytes) and only then find the data short.
+std::string check_dae_counts(const std::string& text) {
+  const std::string key = "count=\"";
+  for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + key.size())) {
+    if (at > 0 && !std::isspace(static_cast<unsigned char>(text[at - 1]))) continue;  // e.g. vcount="
+    const std::size_t begin = at + key.size(), end = text.find('"', begin);
+    if (end == std::string::npos) return {};
+    unsigned long long count = 0;
+    const auto [ptr, ec] = std::from_chars(text.data() + begin, text.data() + end, count);
+    if (ec == std::errc::result_out_of_range || (ec == std::errc() && ptr == text.data() + end && count > text.size())) {
+      const std::size_t open = text.rfind('<', at);
+      const std::string element =
+          open == std::string::npos ? std::string("?") : text.substr(open + 1, text.find_first_of(" \t\r\n>", open) - open - 1);
+      return "line " + std::to_string(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n') + 1) + ": <" + element + "> declares count=\"" + text.substr(begin, end - begin) +
+             "\", more items than the file's " + std::to_string(text.size()) + " bytes can hold";
     }
   }
   return {};
@@ -422,10 +446,13 @@ std::optional<Error> precheck(const ReadContext& ctx) {
     if (Result<bool> read = read_stl(ctx, parts); !read) return read.error();
     return std::nullopt;
   }
-  if (ext != ".obj" && ext != ".off" && ext != ".ply") return std::nullopt;
+  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".dae") return std::nullopt;
   Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
   if (!text) return text.error();
-  const std::string err = ext == ".obj" ? check_obj(*text) : ext == ".off" ? check_off(*text) : check_ply(*text);
+  const std::string err = ext == ".obj"   ? check_obj(*text)
+                          : ext == ".off" ? check_off(*text)
+                          : ext == ".dae" ? check_dae_counts(*text)
+                                          : check_ply(*text);
   if (!err.empty()) return file_error(ctx.display, err);
   return std::nullopt;
 }
@@ -543,6 +570,8 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
     if (std::string err = collect(*scene, *scene->mRootNode, Affine::Identity(), ctx.file_to_output, stem, parts);
         !err.empty())
       return file_error(ctx.display, err);
+  } catch (const std::bad_alloc&) {
+    return file_error(ctx.display, "assimp: out of memory: the file declares more data than fits in memory");
   } catch (const std::exception& e) {
     return file_error(ctx.display, "assimp: " + one_line(e.what()));
   }

@@ -4,6 +4,8 @@
 // is meshed independently), then each instance's faces are transformed into the common frame.
 #include "import_detail.h"
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -25,11 +27,14 @@
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopLoc_Location.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_MapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <UnitsMethods.hxx>
@@ -41,7 +46,10 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <numbers>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -218,6 +226,113 @@ void brep_instances(const TopoDS_Shape& shape, const std::string& stem, std::vec
   if (solids == 1 && !any) out.back().name = stem;
 }
 
+// ---- Triangle budget: how many triangles BRepMesh will make, estimated before it runs. ----
+//
+// A chord of angle θ on a circle of radius r deviates r·(1 − cos(θ/2)) from the arc, so with
+// chord deflection d the step is θ = 2·acos(1 − d/r), at most the angular deflection; a curve
+// of curvature κ = 1/r therefore needs κ/θ segments per unit length (π/acos(1 − d/r) per half
+// turn), and a flat direction none. BRepMesh places a face's interior nodes on a grid in its
+// parameter space with those steps (the range splitters of BRepMesh_*RangeSplitter), and
+// triangulates a planar face from its boundary alone; so a face makes about 2·Nu·Nv triangles,
+// with Nu, Nv the segment counts across its two parameter directions (at least 1), plus about
+// one per boundary segment. Curvatures and speeds are sampled on a grid of the face (and along
+// each edge), the largest count over the rows taken: the estimate is of the right size, not a
+// bound, so the triangles are counted again as they are collected.
+
+// Segments per unit length along a curve of curvature `kappa` (1/length).
+double segments_per_length(double kappa, double deflection, double angle) {
+  if (!(kappa > 0.0) || !std::isfinite(kappa)) return 0.0;
+  const double c = 1.0 - deflection * kappa;
+  const double theta = std::min(angle, c <= -1.0 ? 2.0 * std::numbers::pi : 2.0 * std::acos(c));
+  return kappa / theta;
+}
+
+constexpr int kEstimateSamples = 8;  // per parameter direction of a face, and along an edge
+
+// Segments of an edge's discretisation.
+double edge_segments(const TopoDS_Edge& edge, double deflection, double angle) {
+  if (BRep_Tool::Degenerated(edge)) return 0.0;
+  BRepAdaptor_Curve curve(edge);
+  const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
+  if (!std::isfinite(t0) || !std::isfinite(t1) || !(t1 > t0)) return 1.0;
+  const double dt = (t1 - t0) / kEstimateSamples;
+  double segments = 0.0;
+  for (int i = 0; i < kEstimateSamples; ++i) {
+    gp_Pnt p;
+    gp_Vec d1, d2;
+    curve.D2(t0 + (i + 0.5) * dt, p, d1, d2);
+    const double speed = d1.Magnitude();
+    if (!(speed > 0.0)) continue;
+    const double kappa = d1.Crossed(d2).Magnitude() / (speed * speed * speed);
+    const double add = speed * dt * segments_per_length(kappa, deflection, angle);
+    if (std::isfinite(add)) segments += add;  // a singular point (a pole, a cusp) says nothing
+  }
+  return std::max(1.0, std::ceil(segments));
+}
+
+// Triangles of one face: the interior grid plus the boundary.
+double face_triangles(const TopoDS_Face& face, double deflection, double angle, double angle_interior) {
+  double boundary = 0.0;
+  for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
+    boundary += edge_segments(TopoDS::Edge(ex.Current()), deflection, angle);
+  BRepAdaptor_Surface surface(face, Standard_True);
+  const double u0 = surface.FirstUParameter(), u1 = surface.LastUParameter();
+  const double v0 = surface.FirstVParameter(), v1 = surface.LastVParameter();
+  if (!std::isfinite(u0) || !std::isfinite(u1) || !std::isfinite(v0) || !std::isfinite(v1) || !(u1 > u0) || !(v1 > v0))
+    return boundary;
+  const bool cylinder = surface.GetType() == GeomAbs_Cylinder;
+  const int n = kEstimateSamples;
+  const double du = (u1 - u0) / n, dv = (v1 - v0) / n;
+  std::array<double, kEstimateSamples> rows_u{}, columns_v{};  // segments along u in row j, along v in column i
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      gp_Pnt p;
+      gp_Vec su, sv, suu, svv, suv;
+      surface.D2(u0 + (i + 0.5) * du, v0 + (j + 0.5) * dv, p, su, sv, suu, svv, suv);
+      const gp_Vec normal = su.Crossed(sv);
+      const double lu = su.Magnitude(), lv = sv.Magnitude(), ln = normal.Magnitude();
+      if (!(lu > 0.0) || !(lv > 0.0) || !(ln > 0.0)) continue;
+      // Normal curvature along each parameter line: (S_uu · N) / |S_u|².
+      const double ku = std::abs(suu.Dot(normal)) / (ln * lu * lu);
+      const double kv = std::abs(svv.Dot(normal)) / (ln * lv * lv);
+      double rho_u = segments_per_length(ku, deflection, angle_interior);
+      double rho_v = segments_per_length(kv, deflection, angle_interior);
+      // Curved both ways, a grid cell's triangles deviate most at their centres, s/√2 from the
+      // corners rather than s/2 along a chord: √2 shorter steps (measured: spheres and tori
+      // make twice the triangles of the chord rule).
+      if (rho_u > 0.0 && rho_v > 0.0) rho_u *= std::numbers::sqrt2, rho_v *= std::numbers::sqrt2;
+      // BRepMesh keeps the cells of other surfaces near square: a straight direction (a cone's
+      // rulings) takes the curved one's step; a cylinder's rulings are not split at all.
+      if (!cylinder && (rho_u == 0.0 || rho_v == 0.0)) rho_u = rho_v = std::max(rho_u, rho_v);
+      const double add_u = lu * du * rho_u, add_v = lv * dv * rho_v;
+      if (!std::isfinite(add_u) || !std::isfinite(add_v)) continue;  // a singular point (a pole)
+      rows_u[static_cast<std::size_t>(j)] += add_u;
+      columns_v[static_cast<std::size_t>(i)] += add_v;
+    }
+  const double nu = *std::max_element(rows_u.begin(), rows_u.end());
+  const double nv = *std::max_element(columns_v.begin(), columns_v.end());
+  // A flat face is triangulated from its boundary alone: n boundary nodes, n − 2 triangles.
+  if (nu < 1.0 && nv < 1.0) return std::max(1.0, boundary - 2.0);
+  return 2.0 * std::max(1.0, nu) * std::max(1.0, nv) + boundary;
+}
+
+std::string count_text(double n) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, n < 1e6 ? "%.0f" : "%.2g", n);
+  return buf;
+}
+
+std::string deflection_text(const ImportOptions& opt) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%g", opt.linear_deflection);
+  return std::string("deflection ") + buf + " " + opt.unit;
+}
+
+std::string budget_advice(const ImportOptions& opt) {
+  return "the limit of " + std::to_string(opt.max_triangles) +
+         " (max_triangles; on the command line --max-triangles): use a larger deflection or raise the limit";
+}
+
 // IGES is made of 80-column records; column 73 names the section (Start, Global, Directory,
 // Parameter, Terminate) and the Terminate record holds each section's line count. OCCT's IGES
 // reader can crash on truncated files, so the structure is checked first.
@@ -334,13 +449,33 @@ Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
     IMeshTools_Parameters params;
     params.Deflection = opt.linear_deflection / output_per_shape_unit;
     params.Angle = opt.angular_deflection;
+
+    // Refuse before meshing what would not fit: every instance holds its part's triangles.
+    {
+      std::map<const void*, double> part_triangles;  // by the part's TShape: parts are estimated once
+      double estimate = 0.0;
+      for (const Instance& inst : instances) {
+        auto [it, added] = part_triangles.emplace(inst.shape.TShape().get(), 0.0);
+        if (added) {
+          TopTools_IndexedMapOfShape faces;
+          TopExp::MapShapes(inst.shape.Located(TopLoc_Location()), TopAbs_FACE, faces);
+          // BRepMesh_IncrementalMesh's default interior angle is twice the edges' angle.
+          for (int i = 1; i <= faces.Extent(); ++i)
+            it->second += face_triangles(TopoDS::Face(faces(i)), params.Deflection, params.Angle, 2.0 * params.Angle);
+        }
+        estimate += it->second;
+      }
+      if (estimate > static_cast<double>(opt.max_triangles))
+        return file_error(ctx.display, "tessellating at " + deflection_text(opt) + " would make about " + count_text(estimate) +
+                                           " triangles, over " + budget_advice(opt));
+    }
     params.InParallel = Standard_True;
     // Explicit, so that the CSF_MeshAlgo environment variable cannot change the result.
     params.MeshAlgo = IMeshTools_MeshAlgoType_Watson;
     BRepMesh_IncrementalMesh mesher(prototypes, params);
     if (!mesher.IsDone()) return file_error(ctx.display, "BRepMesh failed to tessellate the shapes");
 
-    std::size_t untriangulated = 0;
+    std::size_t untriangulated = 0, total = 0;
     for (Instance& inst : instances) {
       TriangleSoup soup;
       soup.name = inst.name.empty() ? stem : inst.name;
@@ -352,6 +487,11 @@ Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
           ++untriangulated;
           continue;
         }
+        // The estimate is not a bound: the triangles kept are counted too.
+        total += static_cast<std::size_t>(tri->NbTriangles());
+        if (total > opt.max_triangles)
+          return file_error(ctx.display, "the tessellation at " + deflection_text(opt) + " has more than " + std::to_string(opt.max_triangles) +
+                                             " triangles, over " + budget_advice(opt));
         const gp_Trsf trsf = loc.Transformation();
         const bool reversed = face.Orientation() == TopAbs_REVERSED;
         for (int i = 1; i <= tri->NbTriangles(); ++i) {

@@ -134,6 +134,7 @@ Result<io_detail::ReadContext> prepare(const std::filesystem::path& file, const 
     if (!(options.angular_deflection > 0.0) || !std::isfinite(options.angular_deflection))
       return file_error(display, "angular deflection must be a positive finite angle in radians, got " +
                                      std::to_string(options.angular_deflection));
+    if (options.max_triangles == 0) return file_error(display, "max_triangles must be at least 1");
   }
 
   std::error_code ec;

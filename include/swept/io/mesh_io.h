@@ -7,6 +7,7 @@
 #include "swept/geometry/result.h"
 #include "swept/geometry/types.h"
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -33,6 +34,12 @@ struct ImportOptions {
   double linear_deflection = 0.1;
   /// BRepMesh angular deflection in radians; CAD formats only, must be > 0.
   double angular_deflection = 0.5;
+  /// Most triangles a CAD tessellation may make (over every instance of every part). The count
+  /// is estimated from each face's curvature and size and the deflections before BRepMesh runs,
+  /// and counted again as the triangles are collected; past it the import is an error naming
+  /// this limit, instead of meshing until memory runs out (a tiny deflection on a curved part).
+  /// CAD formats only, must be > 0; 20 million triangles take about 1.4 GB as a soup.
+  std::size_t max_triangles = 20'000'000;
 };
 
 /// What an import produced.
@@ -68,7 +75,10 @@ struct ImportedModel {
 /// vertex list (OBJ, OFF, PLY with the line; glTF with the mesh and how many faces; any assimp
 /// format with the mesh and face), non-finite coordinates ("triangle I has a non-finite
 /// coordinate", I 0-based within its part, or the line for ASCII formats), unreadable STEP/IGES
-/// (with the failing entities), a file without triangles, non-positive deflections for CAD formats.
+/// (with the failing entities), a file without triangles, non-positive deflections for CAD formats,
+/// a CAD tessellation past options.max_triangles (estimated before BRepMesh runs, naming the limit),
+/// a count declared past what the file's bytes can hold (COLLADA count attributes, PLY and OFF
+/// element counts, the binary STL count), refused before anything is allocated for it.
 Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options = {});
 
 /// The point OMPL.app centres a robot mesh on before placing it by a `.cfg` pose
