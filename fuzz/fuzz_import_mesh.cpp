@@ -6,11 +6,24 @@
 
 #include "swept/io/mesh_io.h"
 
+#include <cstdlib>
 #include <filesystem>
+#include <string>
 
 namespace {
 
 constexpr bool kOmplCenter = SWEPT_FUZZ_OMPL_CENTER;
+
+// The readers as users get them: assimp and OpenCASCADE in a child process (isolate_readers),
+// stopped after 5 s, well inside libFuzzer's -timeout=10. SWEPT_FUZZ_IN_PROCESS=1 reads in this
+// process instead, to fuzz those libraries with coverage (their own crashes are then findings).
+swept::ImportOptions options() {
+  swept::ImportOptions o;
+  o.reader_timeout = 5.0;
+  const char* in_process = std::getenv("SWEPT_FUZZ_IN_PROCESS");
+  o.isolate_readers = !(in_process && std::string(in_process) == "1");
+  return o;
+}
 
 }  // namespace
 
@@ -20,8 +33,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   swept::fuzz::copy_seed_meshes();
   for (const auto& e : std::filesystem::directory_iterator(swept::fuzz::scratch_dir()))
     if (e.path().extension() == SWEPT_FUZZ_EXTENSION) {
-      (void)swept::import_mesh(e.path());
-      if (kOmplCenter) (void)swept::ompl_app_center(e.path());
+      (void)swept::import_mesh(e.path(), options());
+      if (kOmplCenter) (void)swept::ompl_app_center(e.path(), options());
       break;
     }
   return 0;
@@ -29,7 +42,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const swept::fuzz::InputFile input(data, size, SWEPT_FUZZ_EXTENSION);
-  (void)swept::import_mesh(input.path());
-  if (kOmplCenter) (void)swept::ompl_app_center(input.path());
+  static const swept::ImportOptions o = options();
+  (void)swept::import_mesh(input.path(), o);
+  if (kOmplCenter) (void)swept::ompl_app_center(input.path(), o);
   return 0;
 }

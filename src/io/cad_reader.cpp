@@ -469,7 +469,7 @@ Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
         return file_error(ctx.display, "tessellating at " + deflection_text(opt) + " would make about " + count_text(estimate) +
                                            " triangles, over " + budget_advice(opt));
     }
-    params.InParallel = Standard_True;
+    params.InParallel = ctx.single_threaded ? Standard_False : Standard_True;
     // Explicit, so that the CSF_MeshAlgo environment variable cannot change the result.
     params.MeshAlgo = IMeshTools_MeshAlgoType_Watson;
     BRepMesh_IncrementalMesh mesher(prototypes, params);

@@ -21,6 +21,8 @@ struct ReadContext {
   double metres_per_output = 1e-3;
   const ImportOptions* options = nullptr;
   std::vector<std::string>* warnings = nullptr;  ///< ImportedModel::warnings
+  /// In a reader's child process (isolate.h): no oneTBB, so BRepMesh meshes on one thread.
+  bool single_threaded = false;
 };
 
 /// STL, ASCII or binary (detected from the content, not the first five bytes alone).

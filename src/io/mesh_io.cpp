@@ -5,6 +5,7 @@
 #include "swept/io/file_write.h"
 
 #include "import_detail.h"
+#include "isolate.h"
 
 #include <algorithm>
 #include <array>
@@ -156,6 +157,58 @@ Result<io_detail::ReadContext> prepare(const std::filesystem::path& file, const 
 
 }  // namespace
 
+// A third-party reader (assimp or OpenCASCADE) run in a child process (isolate.h), its parts
+// and warnings sent back as bytes; in the caller's process when options.isolate_readers is off.
+Result<bool> read_isolated(io_detail::ReadContext& ctx, Reader reader, std::vector<TriangleSoup>& parts,
+                           std::vector<std::string>& warnings) {
+  auto read_here = [&ctx, reader](std::vector<TriangleSoup>& out) {
+    return reader == Reader::assimp ? io_detail::read_with_assimp(ctx, out) : io_detail::read_cad(ctx, out);
+  };
+  if (!ctx.options->isolate_readers) return read_here(parts);
+  const char* name = reader == Reader::assimp ? "assimp" : "OpenCASCADE";
+  auto bytes = io_detail::run_isolated(ctx.display, name, ctx.options->reader_timeout, [&]() -> Result<std::string> {
+    ctx.single_threaded = true;  // no oneTBB after fork
+    std::vector<TriangleSoup> out;
+    Result<bool> r = read_here(out);
+    if (!r) return r.error();
+    io_detail::ByteWriter w;
+    w.u64(out.size());
+    for (const TriangleSoup& part : out) {
+      w.str(part.name);
+      w.u64(part.triangles.size());
+      for (const Triangle& t : part.triangles)
+        for (int k = 0; k < 3; ++k) w.put(t[k].data(), 3 * sizeof(double));
+    }
+    w.u64(warnings.size());
+    for (const std::string& s : warnings) w.str(s);
+    return w.take();
+  });
+  if (!bytes) return bytes.error();
+  io_detail::ByteReader r(*bytes);
+  const Error cut = io_detail::file_error(ctx.display, std::string("internal: the ") + name + " reader's answer was cut short");
+  std::uint64_t count = 0;
+  if (!r.u64(count)) return cut;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    TriangleSoup part;
+    std::uint64_t n = 0;
+    if (!r.str(part.name) || !r.u64(n) || n > bytes->size() / (9 * sizeof(double))) return cut;
+    part.triangles.resize(n);
+    for (Triangle& t : part.triangles)
+      for (int k = 0; k < 3; ++k)
+        if (!r.get(t[k].data(), 3 * sizeof(double))) return cut;
+    parts.push_back(std::move(part));
+  }
+  if (!r.u64(count)) return cut;
+  warnings.clear();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::string s;
+    if (!r.str(s)) return cut;
+    warnings.push_back(std::move(s));
+  }
+  if (!r.done()) return cut;
+  return true;
+}
+
 Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options) {
   using io_detail::file_error;
   Reader reader = Reader::stl;
@@ -170,8 +223,7 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   model.unit = options.unit;
   ctx.warnings = &model.warnings;
   Result<bool> read = is_stl ? io_detail::read_stl(ctx, model.parts)
-                      : is_assimp ? io_detail::read_with_assimp(ctx, model.parts)
-                                  : io_detail::read_cad(ctx, model.parts);
+                              : read_isolated(ctx, is_assimp ? Reader::assimp : Reader::cad, model.parts, model.warnings);
   if (!read) return read.error();
 
   // Drop parts without triangles (empty solids, point clouds); a file without any is an error.
@@ -202,7 +254,24 @@ Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOpti
   Reader reader = Reader::stl;
   Result<io_detail::ReadContext> ctx = prepare(file, options, reader);
   if (!ctx) return ctx.error();
-  if (reader != Reader::cad) return io_detail::ompl_app_center_with_assimp(*ctx);
+  if (reader != Reader::cad) {
+    // assimp, isolated like every third-party read (isolate.h).
+    if (!options.isolate_readers) return io_detail::ompl_app_center_with_assimp(*ctx);
+    const io_detail::ReadContext& c = *ctx;
+    auto bytes = io_detail::run_isolated(c.display, "assimp", options.reader_timeout, [&c]() -> Result<std::string> {
+      Result<Vec3> centre = io_detail::ompl_app_center_with_assimp(c);
+      if (!centre) return centre.error();
+      io_detail::ByteWriter w;
+      for (int i = 0; i < 3; ++i) w.f64((*centre)[i]);
+      return w.take();
+    });
+    if (!bytes) return bytes.error();
+    io_detail::ByteReader r(*bytes);
+    Vec3 centre;
+    if (!r.f64(centre.x()) || !r.f64(centre.y()) || !r.f64(centre.z()) || !r.done())
+      return io_detail::file_error(c.display, "internal: the assimp reader's answer was cut short");
+    return centre;
+  }
 
   // OMPL.app cannot read CAD files: the nearest rule is the mean of the tessellation's distinct
   // vertex positions (each corner once, whatever the faces around it).

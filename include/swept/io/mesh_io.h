@@ -40,6 +40,13 @@ struct ImportOptions {
   /// this limit, instead of meshing until memory runs out (a tiny deflection on a curved part).
   /// CAD formats only, must be > 0; 20 million triangles take about 1.4 GB as a soup.
   std::size_t max_triangles = 20'000'000;
+  /// Run the third-party readers (assimp, OpenCASCADE) in a child process, so that a crash, a
+  /// failed assert, a hang or a leak of theirs on a malformed file becomes an Error naming the
+  /// file instead of ending the caller (fuzzing found such files for both). CAD then meshes on
+  /// one thread. Off: in this process, with BRepMesh in parallel.
+  bool isolate_readers = true;
+  /// Seconds a reader may take in its child process before it is stopped (an Error).
+  double reader_timeout = 600.0;
 };
 
 /// What an import produced.

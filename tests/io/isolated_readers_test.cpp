@@ -1,0 +1,84 @@
+// Third-party readers run in a child process (src/io/isolate.h): the inputs with which fuzzing
+// crashed, hung or aborted OpenCASCADE and assimp (fuzz/regressions/) give an Error naming the
+// file, and a good file reads the same isolated or not.
+#include "swept/io/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <unistd.h>
+
+namespace swept {
+namespace {
+
+namespace fs = std::filesystem;
+
+class IsolatedReaders : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("swept_isolated_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  // A regression input under the extension its reader needs.
+  fs::path input(const std::string& target, const std::string& name, const std::string& ext) {
+    const fs::path from = fs::path(SWEPT_SOURCE_DIR) / "fuzz" / "regressions" / target / name;
+    const fs::path to = dir / (name + ext);
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing);
+    return to;
+  }
+  fs::path dir;
+};
+
+TEST_F(IsolatedReaders, OpenCascadeCrashesBecomeErrors) {
+  for (const auto& [target, name, ext] : {std::tuple{"fuzz_brep", "occt-brep-trimmed-surface-null-basis", ".brep"},
+                                          std::tuple{"fuzz_iges", "occt-iges-face-null-surface", ".iges"},
+                                          std::tuple{"fuzz_step", "occt-step-unresolved-reference-null-direction", ".step"}}) {
+    const fs::path f = input(target, name, ext);
+    const auto r = import_mesh(f);
+    ASSERT_FALSE(r) << name;
+    EXPECT_NE(r.error().message.find(f.string()), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find("OpenCASCADE"), std::string::npos) << r.error().message;
+  }
+}
+
+TEST_F(IsolatedReaders, AssimpAssertsAndHangsBecomeErrors) {
+  const fs::path ply = input("fuzz_ply", "assimp-triangulate-assert-ascii-face-with-0-indices.ply", ".ply");
+  const auto a = import_mesh(ply);
+  ASSERT_FALSE(a);
+  EXPECT_NE(a.error().message.find(ply.string()), std::string::npos) << a.error().message;
+  // The COLLADA input on which assimp never returns: stopped after the reader's time.
+  const fs::path dae = input("fuzz_dae", "assimp-collada-hang-bad-char-in-p", ".dae");
+  ImportOptions quick;
+  quick.reader_timeout = 2.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto h = import_mesh(dae, quick);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_FALSE(h);
+  EXPECT_LT(secs, 30.0);
+  EXPECT_NE(h.error().message.find(dae.string()), std::string::npos) << h.error().message;
+}
+
+TEST_F(IsolatedReaders, AGoodFileReadsTheSameIsolatedOrNot) {
+  for (const char* name : {"box.brep", "box_mm.step", "assembly.step"}) {
+    const fs::path f = fs::path(SWEPT_SOURCE_DIR) / "tests" / "data" / "io" / name;
+    ImportOptions here;
+    here.isolate_readers = false;
+    const auto a = import_mesh(f);
+    const auto b = import_mesh(f, here);
+    ASSERT_TRUE(a) << a.error().message;
+    ASSERT_TRUE(b) << b.error().message;
+    ASSERT_EQ(a->parts.size(), b->parts.size()) << name;
+    for (std::size_t i = 0; i < a->parts.size(); ++i) {
+      EXPECT_EQ(a->parts[i].name, b->parts[i].name);
+      ASSERT_EQ(a->parts[i].triangles.size(), b->parts[i].triangles.size()) << name;
+      for (std::size_t k = 0; k < a->parts[i].triangles.size(); ++k)
+        for (int v = 0; v < 3; ++v) EXPECT_EQ(a->parts[i].triangles[k][v], b->parts[i].triangles[k][v]);
+    }
+    EXPECT_EQ(a->warnings, b->warnings);
+  }
+}
+
+}  // namespace
+}  // namespace swept
