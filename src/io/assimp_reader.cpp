@@ -5,6 +5,7 @@
 // were, and hangs on some truncated PLY files.
 #include "import_detail.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <optional>
 #include <string_view>
@@ -436,6 +438,60 @@ std::string collect(const aiScene& scene, const aiNode& node, const Affine& pare
 
 namespace {
 
+// glTF: every buffer and image uri is a data: URI or a relative path that stays in the model's
+// folder ("sub/mesh.bin"); an absolute path, a "../" that climbs out of the folder or a URL
+// (http:, file:, ...) is an error naming it. "" when fine or not glTF we can parse (assimp then says).
+std::string check_gltf_uris(const std::string& bytes, bool binary) {
+  std::string_view text = bytes;
+  if (binary) {
+    if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0 || bytes.compare(16, 4, "JSON") != 0) return {};
+    std::uint32_t length = 0;
+    for (int b = 0; b < 4; ++b) length |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[12 + b])) << (8 * b);
+    if (length > bytes.size() - 20) return {};
+    text = std::string_view(bytes).substr(20, length);
+  }
+  const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) return {};
+  for (const char* kind : {"buffers", "images"}) {
+    const auto list = doc.find(kind);
+    if (list == doc.end() || !list->is_array()) continue;
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const auto uri_it = (*list)[i].find("uri");
+      if (uri_it == (*list)[i].end() || !uri_it->is_string()) continue;
+      const std::string uri = uri_it->get<std::string>();
+      if (uri.rfind("data:", 0) == 0) continue;
+      const std::string where = std::string(kind) + "[" + std::to_string(i) + "].uri " + io_detail::quoted(uri);
+      const std::size_t colon = uri.find(':'), slash = uri.find('/');
+      if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
+        return where + " is a URL: only data: URIs and files in the model's folder are read";
+      // Percent-decoded, as assimp opens it; then no leading '/' and no climb above the folder.
+      std::string path;
+      for (std::size_t k = 0; k < uri.size(); ++k) {
+        unsigned value = 0;
+        if (uri[k] == '%' && k + 2 < uri.size() &&
+            std::from_chars(uri.data() + k + 1, uri.data() + k + 3, value, 16).ptr == uri.data() + k + 3) {
+          path.push_back(static_cast<char>(value));
+          k += 2;
+        } else {
+          path.push_back(uri[k]);
+        }
+      }
+      int depth = 0;
+      bool escapes = !path.empty() && (path[0] == '/' || path[0] == '\\');
+      for (std::size_t b = 0; b <= path.size() && !escapes;) {
+        std::size_t e = path.find_first_of("/\\", b);
+        if (e == std::string::npos) e = path.size();
+        const std::string_view part(path.data() + b, e - b);
+        if (part == "..") escapes = --depth < 0;
+        else if (!part.empty() && part != ".") ++depth;
+        b = e + 1;
+      }
+      if (escapes) return where + " is outside the model's folder (external files must be in its folder or below)";
+    }
+  }
+  return {};
+}
+
 // OBJ, OFF and PLY are checked by us first (assimp takes malformed numbers silently and hangs on
 // some truncated PLY files); so is STL, read with assimp only for ompl_app_center() (assimp
 // takes a truncated binary STL silently). nullopt when fine.
@@ -446,9 +502,14 @@ std::optional<Error> precheck(const ReadContext& ctx) {
     if (Result<bool> read = read_stl(ctx, parts); !read) return read.error();
     return std::nullopt;
   }
-  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".dae") return std::nullopt;
+  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".dae" && ext != ".gltf" && ext != ".glb")
+    return std::nullopt;
   Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
   if (!text) return text.error();
+  if (ext == ".gltf" || ext == ".glb") {
+    if (std::string err = check_gltf_uris(*text, ext == ".glb"); !err.empty()) return file_error(ctx.display, err);
+    return std::nullopt;
+  }
   const std::string err = ext == ".obj"   ? check_obj(*text)
                           : ext == ".off" ? check_off(*text)
                           : ext == ".dae" ? check_dae_counts(*text)
@@ -547,6 +608,62 @@ void sum_vertices(const aiScene& scene, const aiNode& node, const Affine& parent
 
 }  // namespace
 
+namespace {
+
+// assimp follows a model's external references (glTF buffer and image uris, OBJ mtllib, COLLADA
+// images) to any path, so a model could make us read any file on the machine. This file system
+// opens, for reading only, the model itself and files in its folder or below; anything else (an
+// absolute path elsewhere, a "../" escaping the folder, a URL such as http://) is refused and
+// remembered, never opened. glTF's data: uris are decoded by assimp without opening a file.
+class ModelFolderIOSystem : public Assimp::DefaultIOSystem {
+ public:
+  explicit ModelFolderIOSystem(const std::filesystem::path& model) {
+    std::error_code ec;
+    model_ = std::filesystem::weakly_canonical(model, ec);
+    folder_ = model_.parent_path();
+  }
+  bool Exists(const char* file) const override {
+    if (allowed(file)) return DefaultIOSystem::Exists(file);
+    refuse(file);
+    return false;
+  }
+  Assimp::IOStream* Open(const char* file, const char* mode = "rb") override {
+    if (!allowed(file) || std::string_view(mode).find_first_of("wa+") != std::string_view::npos) {
+      refuse(file);
+      return nullptr;
+    }
+    return DefaultIOSystem::Open(file, mode);
+  }
+  /// The references refused, as assimp asked for them (joined to the model's folder if relative).
+  mutable std::vector<std::string> refused;
+
+ private:
+  bool allowed(const char* file) const {
+    const std::string_view name(file);
+    if (name.find("://") != std::string_view::npos) return false;  // a URL: never fetched
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::path(name), ec);
+    if (ec) return false;
+    if (p == model_) return true;
+    // Inside the folder: the folder is a prefix of the path, component by component.
+    auto [f, q] = std::mismatch(folder_.begin(), folder_.end(), p.begin(), p.end());
+    return f == folder_.end() && q != p.end();
+  }
+  void refuse(const char* file) const {
+    if (std::find(refused.begin(), refused.end(), file) == refused.end()) refused.emplace_back(file);
+  }
+  std::filesystem::path model_, folder_;
+};
+
+// "" when nothing was refused; else the message naming the references.
+std::string refused_references(const ModelFolderIOSystem& io) {
+  std::string out;
+  for (const std::string& r : io.refused) out += (out.empty() ? "'" : ", '") + r + "'";
+  return out;
+}
+
+}  // namespace
+
 Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
   if (auto err = precheck(ctx)) return *err;
   try {
@@ -554,10 +671,19 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
     // file's (x, y, z) reads as (x, z, -y), an X_UP file's as (-y, x, z) (ColladaLoader
     // multiplies the root node's transformation by that rotation after the <unit> scale).
     Assimp::Importer importer;
+    auto* io = new ModelFolderIOSystem(ctx.file);  // owned by the importer
+    importer.SetIOHandler(io);
     // ValidateDataStructure rejects face indices past the vertex list (and other broken scenes)
     // before any other step reads them.
     const aiScene* scene = importer.ReadFile(ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate);
+    const std::string refused = refused_references(*io);
+    if (scene == nullptr && !refused.empty())
+      return file_error(ctx.display, "refers to " + refused +
+                                         " outside the model's folder (external files must be in its folder or below)");
     if (scene == nullptr) return file_error(ctx.display, "assimp: " + one_line(importer.GetErrorString()));
+    // The geometry did not need them (e.g. an OBJ's mtllib: materials only): read without them.
+    if (!refused.empty() && ctx.warnings != nullptr)
+      ctx.warnings->push_back(ctx.display + ": " + refused + " outside the model's folder not read (materials skipped)");
     if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
     const std::string ext = lower(ctx.file.extension().string());
     if (ext == ".gltf" || ext == ".glb") {
@@ -586,9 +712,14 @@ Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx) {
     // order of the flags: OptimizeGraph, Triangulate, SortByPType, GenFaceNormals, then
     // JoinIdenticalVertices, which joins vertices whose position *and* normal agree.
     Assimp::Importer importer;
+    auto* io = new ModelFolderIOSystem(ctx.file);  // owned by the importer
+    importer.SetIOHandler(io);
     const aiScene* scene = importer.ReadFile(
         ctx.file.string(), aiProcess_ValidateDataStructure | aiProcess_GenNormals | aiProcess_Triangulate |
                                aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_OptimizeGraph);
+    if (scene == nullptr && !io->refused.empty())
+      return file_error(ctx.display, "refers to " + refused_references(*io) +
+                                         " outside the model's folder (external files must be in its folder or below)");
     if (scene == nullptr) return file_error(ctx.display, "assimp: " + one_line(importer.GetErrorString()));
     if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
     Vec3 sum = Vec3::Zero();

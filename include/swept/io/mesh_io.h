@@ -85,7 +85,10 @@ struct ImportedModel {
 /// (with the failing entities), a file without triangles, non-positive deflections for CAD formats,
 /// a CAD tessellation past options.max_triangles (estimated before BRepMesh runs, naming the limit),
 /// a count declared past what the file's bytes can hold (COLLADA count attributes, PLY and OFF
-/// element counts, the binary STL count), refused before anything is allocated for it.
+/// element counts, the binary STL count), refused before anything is allocated for it, a glTF/GLB
+/// buffer or image uri that is not a data: URI or a relative path inside the model's folder
+/// (naming it). assimp opens other references (an OBJ's mtllib) only inside the model's folder
+/// and below: one elsewhere is never opened, and the geometry loads without it.
 Result<ImportedModel> import_mesh(const std::filesystem::path& file, const ImportOptions& options = {});
 
 /// The point OMPL.app centres a robot mesh on before placing it by a `.cfg` pose
