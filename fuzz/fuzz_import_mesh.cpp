@@ -15,11 +15,12 @@ namespace {
 constexpr bool kOmplCenter = SWEPT_FUZZ_OMPL_CENTER;
 
 // The readers as users get them: assimp and OpenCASCADE in a child process (isolate_readers),
-// stopped after 5 s, well inside libFuzzer's -timeout=10. SWEPT_FUZZ_IN_PROCESS=1 reads in this
+// stopped after 3 s: an input is read twice (import_mesh, ompl_app_center), and two stopped
+// reads must stay well inside libFuzzer's -timeout=10. SWEPT_FUZZ_IN_PROCESS=1 reads in this
 // process instead, to fuzz those libraries with coverage (their own crashes are then findings).
 swept::ImportOptions options() {
   swept::ImportOptions o;
-  o.reader_timeout = 5.0;
+  o.reader_timeout = 3.0;
   const char* in_process = std::getenv("SWEPT_FUZZ_IN_PROCESS");
   o.isolate_readers = !(in_process && std::string(in_process) == "1");
   return o;

@@ -1,9 +1,12 @@
 // Scratch folder and input files of the fuzz targets (fuzz_support.h).
 #include "fuzz_support.h"
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <pthread.h>
+#include <sanitizer/common_interface_defs.h>
 #include <string>
 #include <system_error>
 #include <unistd.h>
@@ -28,6 +31,19 @@ void remove_scratch_dir() {
   std::error_code ec;
   fs::remove_all(scratch_dir(), ec);
 }
+
+// In a child the readers fork (ImportOptions::isolate_readers), libFuzzer's crash handling
+// would report the child's crash as a finding of this process and write the input as an
+// artifact, although the parent survives it by design. The child drops it: a fatal signal then
+// ends the child as in a user's process, and a sanitizer report in the child ends only the child.
+void child_without_fuzzer_handlers() {
+  __sanitizer_set_death_callback(nullptr);
+  for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGILL, SIGFPE, SIGINT, SIGTERM, SIGXFSZ, SIGUSR1, SIGUSR2})
+    std::signal(sig, SIG_DFL);
+}
+
+// Registered before main() runs the fuzzer, so that every fork of the process gets it.
+[[maybe_unused]] const bool kChildHandlerRegistered = pthread_atfork(nullptr, nullptr, child_without_fuzzer_handlers) == 0;
 
 }  // namespace
 
