@@ -618,9 +618,11 @@ namespace {
 class ModelFolderIOSystem : public Assimp::DefaultIOSystem {
  public:
   explicit ModelFolderIOSystem(const std::filesystem::path& model) {
+    // The folder the model is named in (a symbolic link to the model does not move it), resolved
+    // as every requested path is, so that "a/./b" and "a/x/../b" compare equal.
     std::error_code ec;
     model_ = std::filesystem::weakly_canonical(model, ec);
-    folder_ = model_.parent_path();
+    folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(model, ec).parent_path(), ec);
   }
   bool Exists(const char* file) const override {
     if (allowed(file)) return DefaultIOSystem::Exists(file);
