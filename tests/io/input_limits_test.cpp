@@ -3,6 +3,7 @@
 // BRepMesh runs), and mesh files declaring far more items than their bytes can hold.
 #include "import_test_util.h"
 #include "support/cli_support.h"
+#include "support/test_support.h"
 
 #include "swept/io/mesh_io.h"
 
@@ -13,6 +14,8 @@
 
 namespace swept::test {
 namespace {
+
+namespace fs = std::filesystem;
 
 // A solid sphere of radius 10 mm about the origin, as OCCT's BRepTools::Write writes
 // BRepPrimAPI_MakeSphere(10.0): one spherical face, its seam and two degenerate pole edges.
@@ -112,6 +115,17 @@ TEST(TriangleBudget, TinyDeflectionOnASphereIsRefusedBeforeMeshing) {
     expect_error(r, {sphere.string() + ": ", "deflection 1e-06 mm", "triangles", std::to_string(cap), "max_triangles",
                      "--max-triangles"});
   }
+}
+
+// The reported case: an 88 KB STEP screw at 1e-6 mm grew past 7 GB in 90 s (BRepMesh peaks near
+// 1 KB per triangle); by default it is refused before meshing.
+TEST(TriangleBudget, ScrewStepAtOneNanometreIsRefusedByDefault) {
+  const auto data = shared_data();
+  if (!data || !fs::exists(*data / "occt" / "screw.step")) GTEST_SKIP() << "shared CAD data (occt/screw.step) not found";
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = import_mesh(*data / "occt" / "screw.step", cad(1e-6));
+  EXPECT_LT(seconds_since(t0), 10.0);
+  expect_error(r, {"screw.step: tessellating at deflection 1e-06 mm would make about", "max_triangles"});
 }
 
 TEST(TriangleBudget, NormalDeflectionStillWorksAndTheCapIsACap) {
