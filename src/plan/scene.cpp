@@ -21,6 +21,7 @@ Result<PlanScene> load_scene(const Problem& problem, Fitter fitter) {
       io.unit = problem.unit;
       io.file_unit = ref.file_unit;
       io.linear_deflection = ref.deflection > 0 ? ref.deflection : problem.deflection;
+      io.max_triangles = problem.max_triangles;
       auto model = import_mesh(ref.file, io);
       if (!model) return model.error();
       TriangleSoup soup = model->merged();

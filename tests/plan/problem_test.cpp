@@ -392,3 +392,37 @@ TEST_F(ProblemFiles, BadPathFiles) {
 
 }  // namespace
 }  // namespace swept
+
+namespace swept {
+namespace {
+
+// planner.max_triangles reaches the CAD import of every mesh of the problem.
+TEST(ProblemBudget, MaxTrianglesReachesTheCadImport) {
+  const fs::path dir = fs::temp_directory_path() / ("swept_problem_budget_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path box = fs::path(SWEPT_SOURCE_DIR) / "tests" / "data" / "io" / "box.brep";
+  const auto g = scenes::peg_in_hole();
+  ASSERT_TRUE(write_stl_binary(dir / "peg.stl", g.body));
+  auto text = [&](const std::string& planner) {
+    return "unit = \"mm\"\n[[obstacle]]\nfile = \"" + box.string() +
+           "\"\n[[body]]\nfile = \"peg.stl\"\n[start]\ntranslation = [0, 0, 100]\nquaternion = [0, 0, 0, 1]\n"
+           "[goal]\noutside = true\n[planner]\n" + planner;
+  };
+  std::ofstream(dir / "small.toml") << text("max_triangles = 4\n");
+  std::ofstream(dir / "zero.toml") << text("max_triangles = 0\n");
+  std::ofstream(dir / "fine.toml") << text("");
+  auto small = load_problem(dir / "small.toml");
+  ASSERT_TRUE(small) << small.error().message;
+  EXPECT_EQ(small->max_triangles, 4u);
+  const auto scene = load_scene(*small, small->fitter);
+  ASSERT_FALSE(scene);
+  EXPECT_NE(scene.error().message.find("max_triangles"), std::string::npos) << scene.error().message;
+  EXPECT_FALSE(load_problem(dir / "zero.toml"));
+  auto fine = load_problem(dir / "fine.toml");
+  ASSERT_TRUE(fine) << fine.error().message;
+  EXPECT_TRUE(load_scene(*fine, fine->fitter));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace swept

@@ -4,6 +4,7 @@
 #include "swept/bvh/bvh.h"
 #include "swept/geometry/pose.h"
 #include "swept/geometry/result.h"
+#include "swept/io/mesh_io.h"
 
 #include <array>
 #include <filesystem>
@@ -29,7 +30,7 @@ struct Problem {
   std::string unit = "mm";
   std::vector<MeshRef> obstacles;
   std::vector<MeshRef> body;
-  std::optional<Vec3> reference_point;  ///< body frame; default: centre of the bounding sphere
+  std::optional<Vec3> reference_point;  ///< body frame; default: centre of the body's bounding box
   Pose start;                           ///< pose of the body frame in the world
   std::optional<Pose> goal;             ///< a goal pose, or ...
   bool goal_outside = false;            ///< ... the body entirely outside the obstacles' box
@@ -43,6 +44,8 @@ struct Problem {
   double time_limit = 60.0;       ///< seconds
   int threads = 0;                ///< 0: all cores
   double deflection = 0.1;        ///< default BRepMesh linear deflection for CAD meshes
+  /// Triangle budget of each CAD mesh's tessellation (ImportOptions::max_triangles).
+  std::size_t max_triangles = ImportOptions{}.max_triangles;
 };
 
 /// Reads a problem: `.toml` (our format) or `.cfg` (OMPL.app). Errors name the file, the line and
