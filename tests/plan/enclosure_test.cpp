@@ -94,6 +94,9 @@ using scenes::add_box;
 // slides along the floor 1.5 from it. With a clearance 1e-7 below that, each one grazes it: no
 // certificate fits in the query cap, and the answer names that limit, not the clock.
 TEST(PlannerLimits, GrazingMotionsAreRefusedAsResolution) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "under AddressSanitizer one refused certificate (200,000 queries) outlasts the time limit";
+#endif
   scenes::GeneratedProblem g;
   g.name = "grazing";
   add_box(g.obstacles.triangles, Vec3(-50, -50, -10), Vec3(50, 50, -5));  // floor
@@ -103,7 +106,7 @@ TEST(PlannerLimits, GrazingMotionsAreRefusedAsResolution) {
   g.problem.clearance = 1.5 - 1e-7;
   g.problem.rotation = RotationMode::none;
   g.problem.bounds = Aabb{Vec3(-45, -2, 0), Vec3(45, 2, 0)};
-  g.problem.time_limit = 3;  // one refused certificate takes about a second here
+  g.problem.time_limit = 8;  // one refused certificate takes about a second here (release build)
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   EXPECT_EQ(r.status, PlanStatus::no_path_resolution) << r.message;
