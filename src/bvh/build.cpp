@@ -250,8 +250,9 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   if (triangles.empty()) return Error{"cannot build a tree of an empty mesh (0 triangles)"};
   if (triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 2))
     return Error{"mesh too large: " + std::to_string(triangles.size()) + " triangles"};
-  if (config.leaf_size < 1)
-    return Error{"leaf size must be at least 1 (got " + std::to_string(config.leaf_size) + ")"};
+  if (config.leaf_size < 1 || config.leaf_size > kMaxLeafSize)
+    return Error{"leaf size must be between 1 and " + std::to_string(kMaxLeafSize) + " (got " +
+                 std::to_string(config.leaf_size) + ")"};
   Aabb box;
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const Triangle& t = triangles[i];
