@@ -19,8 +19,11 @@ constexpr std::array kFitters{
 };
 
 constexpr std::array kSplitRules{
-    SplitRuleInfo{SplitRule::min_sa, "min-sa", "try e1, e2, e3; keep the smallest SA(left) + SA(right) (IPS CDC)"},
+    SplitRuleInfo{SplitRule::min_sa, "min-sa",
+                  "try e1, e2, e3; keep the smallest SA(left) + SA(right), each side fitted as its own child (IPS CDC, the paper)"},
     SplitRuleInfo{SplitRule::largest, "largest", "split across e1 only (PQP)"},
+    SplitRuleInfo{SplitRule::min_sa_box, "min-sa-box",
+                  "min-sa with each side costed by its bounding box in the node's frame: cheaper, not the paper's rule"},
 };
 
 template <class Table>

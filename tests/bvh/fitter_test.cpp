@@ -267,7 +267,7 @@ TEST(FitterTable, NamesRoundTripAndAreUnique) {
     }
   }
   EXPECT_EQ(fitter_names(), "pqp, rapid2, inertia");
-  EXPECT_EQ(split_rule_names(" | "), "min-sa | largest");
+  EXPECT_EQ(split_rule_names(" | "), "min-sa | largest | min-sa-box");
   Fitter f = Fitter::inertia;
   EXPECT_FALSE(parse_fitter("PQP_FIT", f));
   EXPECT_FALSE(parse_fitter("", f));

@@ -246,7 +246,7 @@ TEST_F(ProblemFiles, WrongTypesAndRangesAreErrorsNamingTheKeyAndLine) {
   const Case cases[] = {
       {"fitter = \"pqp\"", "fitter = 5", "planner.fitter: must be a string"},
       {"fitter = \"pqp\"", "fitter = \"best\"", "planner.fitter: unknown fitter 'best' (pqp, rapid2, inertia)"},
-      {"[planner]", "split = \"median\"", "planner.split: unknown split rule 'median' (min-sa, largest)"},
+      {"[planner]", "split = \"median\"", "planner.split: unknown split rule 'median' (min-sa, largest, min-sa-box)"},
       {"[planner]", "split = 2", "planner.split: must be a string"},
       {"[planner]", "leaf_size = 0", "planner.leaf_size: must be from 1 to 65536, got 0"},
       {"[planner]", "leaf_size = 4.5", "planner.leaf_size: must be a whole number"},

@@ -22,8 +22,10 @@ enum class Fitter : std::uint8_t {
 
 /// How a node's triangles are divided between its two children (SPEC §2.2).
 enum class SplitRule : std::uint8_t {
-  min_sa,   ///< IPS CDC: try e1, e2, e3 and keep the smallest SA(left) + SA(right).
-  largest,  ///< PQP: split across e1 only.
+  min_sa,      ///< IPS CDC: try e1, e2, e3; keep the smallest SA(left) + SA(right), each side's
+               ///< RSS fitted as that child's own (the paper's eq. (4)).
+  largest,     ///< PQP: split across e1 only.
+  min_sa_box,  ///< min-sa costed by each side's bounding box in the node's frame (cheaper).
 };
 
 /// A fitter's matrix, as the fused two-pass kernel of src/bvh/fitter.cpp computes it (SPEC §2.1):
