@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace swept::io_detail {
@@ -15,10 +16,29 @@ namespace swept::io_detail {
 /// `s` in lower case (ASCII).
 std::string lower(std::string s);
 
+/// The whitespace-separated tokens of a line.
+std::vector<std::string_view> split(std::string_view line);
+/// `s` in quotes for a message, shortened when long.
+std::string quoted(std::string_view s);
+/// Parses a decimal number; "" on success, else the reason.
+std::string parse_number(std::string_view s, double& x);
+/// Parses an integer; false if it is not one.
+bool parse_int(std::string_view s, long long& v);
+
+/// PLY: the header, then every element's data, walked without interpreting it (assimp's PLY
+/// reader can loop forever on a truncated ASCII body and reads past a truncated binary one).
+/// "" when fine, else the reason with its line or element.
+std::string check_ply(const std::string& bytes);
+
 /// OBJ, OFF, PLY and COLLADA counts checked line by line, glTF's external references confined to
 /// the model's folder, and STL read by swept's reader (assimp takes a truncated binary STL
 /// silently; it reads STL only for ompl_app_center()). nullopt when fine or not ours to check.
 std::optional<Error> precheck(const ReadContext& ctx);
+
+/// IGES's record structure: 80-column records, sections in order, the Terminate record's line
+/// counts, directory entries pointing into the parameter section (OpenCASCADE's IGES reader can
+/// crash on truncated files). "" when fine, else the reason with its line.
+std::string check_iges(const std::string& bytes);
 
 /// glTF 2: the faces each primitive declares (its index count, or its vertex count without
 /// indices, by its mode), one entry per primitive in file order, as assimp's importer makes one
