@@ -187,6 +187,49 @@ std::string check_dae_counts(const std::string& text) {
   return {};
 }
 
+// GLB (the glTF binary container, Khronos glTF 2.0 §4.4 "GLB File Format Specification"): a
+// 12-byte header (magic "glTF", version, total length equal to the file's size), then chunks of
+// (length, type, data) that end exactly at the file's end, the first one JSON. glTF 1's binary
+// extension (version 1) has a 20-byte header (magic, version, length, content length, content
+// format 0 = JSON). assimp reads past the end of a short or lying container, so it is walked here
+// first. "" when sound, else the reason.
+std::string check_glb_container(const std::string& bytes) {
+  auto u32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (int b = 0; b < 4; ++b) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + b])) << (8 * b);
+    return v;
+  };
+  if (bytes.size() < 12 || bytes.compare(0, 4, "glTF") != 0)
+    return "not a binary glTF (GLB) file: it does not start with the 12-byte header 'glTF', version, length";
+  const std::uint32_t version = u32(4), length = u32(8);
+  if (length != bytes.size())
+    return "GLB header says the file is " + std::to_string(length) + " bytes, it is " + std::to_string(bytes.size()) +
+           (length > bytes.size() ? " (truncated)" : "");
+  if (version == 1) {
+    if (bytes.size() < 20) return "GLB 1 header is 20 bytes, the file has " + std::to_string(bytes.size());
+    if (u32(16) != 0) return "GLB 1 content format " + std::to_string(u32(16)) + " is not 0 (JSON)";
+    if (u32(12) > bytes.size() - 20)
+      return "GLB 1 content length " + std::to_string(u32(12)) + " runs past the end of the file";
+    return {};
+  }
+  if (version != 2) return "GLB version " + std::to_string(version) + " is not 1 or 2";
+  std::size_t at = 12;
+  int chunk = 0;
+  while (at < bytes.size()) {
+    if (bytes.size() - at < 8)
+      return "GLB chunk " + std::to_string(chunk) + " at byte " + std::to_string(at) + ": its 8-byte header is cut short";
+    const std::uint32_t chunk_length = u32(at);
+    if (chunk_length > bytes.size() - at - 8)
+      return "GLB chunk " + std::to_string(chunk) + " at byte " + std::to_string(at) + ": its length " +
+             std::to_string(chunk_length) + " runs past the end of the file";
+    if (chunk == 0 && bytes.compare(at + 4, 4, "JSON") != 0) return "GLB chunk 0 is not the JSON chunk";
+    at += 8 + chunk_length;
+    ++chunk;
+  }
+  if (chunk == 0) return "GLB file has no JSON chunk";
+  return {};
+}
+
 // glTF: every buffer and image uri is a data: URI or a relative path that stays in the model's
 // folder ("sub/mesh.bin"); an absolute path, a "../" that climbs out of the folder or a URL
 // (http:, file:, ...) is an error naming it. "" when fine or not glTF we can parse (assimp then says).
@@ -254,6 +297,9 @@ std::optional<Error> precheck(const ReadContext& ctx) {
     return std::nullopt;
   Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
   if (!text) return text.error();
+  if (ext == ".glb") {
+    if (std::string err = check_glb_container(*text); !err.empty()) return file_error(ctx.display, err);
+  }
   if (ext == ".gltf" || ext == ".glb") {
     if (std::string err = check_gltf_uris(*text, ext == ".glb"); !err.empty()) return file_error(ctx.display, err);
     return std::nullopt;

@@ -466,8 +466,20 @@ TEST(ImportGltf, BinaryGlb) {
   const Aabb box = bounds(model->merged().triangles);
   expect_vec(box.max, 2, 4, 0, 1e-6);
 
+  // The container is walked before assimp reads it (assimp reads past the end of a lying one).
   const auto bad = write_file(scratch_dir() / "bad.glb", glb.substr(0, 40));
-  expect_error(import_mesh(bad), {bad.string(), "assimp"});
+  expect_error(import_mesh(bad), {bad.string(), "GLB header says the file is " + std::to_string(total) + " bytes, it is 40 (truncated)"});
+  std::string long_chunk = glb;
+  long_chunk.replace(12, 4, u32(static_cast<std::uint32_t>(json.size()) + 100));
+  const auto lying = write_file(scratch_dir() / "lying.glb", long_chunk);
+  expect_error(import_mesh(lying), {lying.string(), "GLB chunk 0 at byte 12: its length", "runs past the end of the file"});
+  std::string not_json = glb;
+  not_json.replace(16, 4, std::string("BIN\0", 4));
+  const auto bin_first = write_file(scratch_dir() / "bin_first.glb", not_json);
+  expect_error(import_mesh(bin_first), {bin_first.string(), "GLB chunk 0 is not the JSON chunk"});
+  // Found by fuzz_glb: 30 bytes that are no GLB at all made assimp's readers over-read the heap.
+  const auto junk = write_file(scratch_dir() / "junk.glb", std::string("g\x11indexarray\0\xb0\x02\0\0L\x02\0\0JSON{\0\0\0\0", 30));
+  expect_error(import_mesh(junk), {junk.string(), "not a binary glTF (GLB) file"});
 }
 
 // A one-triangle COLLADA file in millimetres with the given <up_axis>.
