@@ -22,6 +22,7 @@
 //
 // The test also prints, without asserting it, how often the paper's definition (each side fitted
 // with its own fitter and axes) would have chosen another candidate.
+#include "support/tables.h"
 #include "support/test_support.h"
 #include "swept/bvh/bvh.h"
 #include "swept/bvh/fitter.h"
@@ -216,7 +217,7 @@ TEST(MinSaSplit, RssAreaFormulaMatchesTheLibrary) {
 
 TEST(MinSaSplit, EveryCheckedNodeKeepsTheCheapestCandidateOnSeededSets) {
   test::Rng rng(2024);
-  for (Fitter fitter : {Fitter::pqp, Fitter::rapid2, Fitter::inertia}) {
+  for (Fitter fitter : swept::test::every_fitter()) {
     PaperComparison paper;
     int checked = 0, roots = 0;
     for (int trial = 0; trial < 12; ++trial) {
