@@ -33,7 +33,7 @@ CLI::Option* add_fitter_option(CLI::App& cmd, std::string& text, const std::stri
 CLI::Option* add_split_option(CLI::App& cmd, std::string& text, const std::string& help, bool allow_all) {
   std::string choices;
   for (const SplitRuleInfo& s : all_split_rules())
-    choices += (choices.empty() ? "" : " | ") + std::string(s.name) + " (" + std::string(s.summary) + ")";
+    choices += (choices.empty() ? "" : " | ") + std::string(s.name) + " = " + std::string(s.summary);
   return cmd.add_option("--split", text, help + ": " + choices + (allow_all ? " | all" : ""));
 }
 
