@@ -130,7 +130,7 @@ std::string problem_toml(const SceneModel& m, const SceneReport& r) {
                         std::to_string(r.obstacle_triangles) + ".";
   Problem p;
   p.unit = "mm";
-  for (const MeshFile& f : r.meshes) (f.body ? p.body : p.obstacles).push_back(MeshRef{.file = f.file, .file_unit = "mm"});
+  for (const MeshFile& f : r.meshes) (f.body ? p.body : p.obstacles).push_back(mesh_ref(f.file, "mm"));
   p.start = m.start;
   p.goal_outside = m.goal_outside;
   if (m.goal_outside) p.goal_margin = m.goal_margin;

@@ -1,6 +1,7 @@
 #include "swept/scenes/problem_toml.h"
 
 #include <charconv>
+#include <initializer_list>
 #include <numbers>
 
 namespace swept::scenes {
@@ -16,11 +17,18 @@ std::string num(double v) {
   return s;
 }
 
-std::string vec(const Vec3& v) { return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]"; }
+/// "[a, b, c]". (Appended piece by piece: GCC 12's -Wrestrict misfires on "[" + std::string.)
+std::string list(std::initializer_list<double> values) {
+  std::string s = "[";
+  for (const double v : values) s.append(s.size() > 1 ? ", " : "").append(num(v));
+  return s.append("]");
+}
+
+std::string vec(const Vec3& v) { return list({v.x(), v.y(), v.z()}); }
 
 std::string quat(const Pose& p) {
   const Quat q = p.quaternion();
-  return "[" + num(q.x()) + ", " + num(q.y()) + ", " + num(q.z()) + ", " + num(q.w()) + "]";
+  return list({q.x(), q.y(), q.z(), q.w()});
 }
 
 std::string pose_lines(const Pose& p) { return "translation = " + vec(p.translation) + "\nquaternion = " + quat(p) + "\n"; }
@@ -46,6 +54,14 @@ std::string_view rotation_mode(RotationMode m) {
 }
 
 }  // namespace
+
+MeshRef mesh_ref(const std::filesystem::path& file, const std::string& file_unit, const Pose& pose) {
+  MeshRef m;
+  m.file = file;
+  m.file_unit = file_unit;
+  m.pose = pose;
+  return m;
+}
 
 std::string problem_toml(const Problem& p, std::string_view comment) {
   std::string s = "# ";

@@ -29,8 +29,8 @@ Problem round_trip(Problem p, const std::string& tag) {
   const GeneratedProblem box = peg_in_hole();
   EXPECT_TRUE(write_stl_binary(dir / "o.stl", box.obstacles));
   EXPECT_TRUE(write_stl_binary(dir / "b.stl", box.body));
-  p.obstacles = {MeshRef{.file = "o.stl", .file_unit = "mm"}};
-  p.body = {MeshRef{.file = "b.stl", .pose = Pose::from_axis_angle({0, 1, 0}, 0.3, {1, 2, 3})}};
+  p.obstacles = {mesh_ref("o.stl", "mm")};
+  p.body = {mesh_ref("b.stl", "", Pose::from_axis_angle({0, 1, 0}, 0.3, {1, 2, 3}))};
   std::ofstream(dir / "problem.toml") << problem_toml(p, "a test\nwith two lines");
   auto back = load_problem(dir / "problem.toml");
   fs::remove_all(dir);

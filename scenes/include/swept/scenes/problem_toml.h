@@ -9,6 +9,10 @@
 
 namespace swept::scenes {
 
+/// A mesh of a problem file: `file` (relative to the problem file) in `file_unit` (empty: the
+/// importer's default), at `pose`.
+MeshRef mesh_ref(const std::filesystem::path& file, const std::string& file_unit = {}, const Pose& pose = {});
+
 /// The problem as problem.toml text, readable back by load_problem() to the same Problem (numbers
 /// written with the fewest digits that read back exactly). Mesh files are written as given
 /// (relative to the problem file when relative); a mesh's pose only when it is not the identity.
