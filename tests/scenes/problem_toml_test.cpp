@@ -17,12 +17,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// Exactly equal (Eigen vectors compared by their largest difference: GoogleTest cannot print them).
+void expect_same(const Vec3& a, const Vec3& b, const std::string& what) {
+  EXPECT_EQ((a - b).cwiseAbs().maxCoeff(), 0.0) << what;
+}
+
 void expect_same_pose(const Pose& a, const Pose& b, const std::string& what) {
-  EXPECT_EQ(a.translation, b.translation) << what;
+  expect_same(a.translation, b.translation, what);
   EXPECT_LT((a.rotation - b.rotation).norm(), 1e-15) << what;
 }
 
-/// Writes `p` with two mesh files beside it and reads it back.
+const Pose kBodyPose = Pose::from_axis_angle({0, 1, 0}, 0.3, {1, 2, 3});
+
+/// Writes `p` with two mesh files beside it (the body's at kBodyPose) and reads it back.
 Problem round_trip(Problem p, const std::string& tag) {
   const fs::path dir = fs::temp_directory_path() / ("swept_problem_toml_" + tag + "_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -30,7 +37,7 @@ Problem round_trip(Problem p, const std::string& tag) {
   EXPECT_TRUE(write_stl_binary(dir / "o.stl", box.obstacles));
   EXPECT_TRUE(write_stl_binary(dir / "b.stl", box.body));
   p.obstacles = {mesh_ref("o.stl", "mm")};
-  p.body = {mesh_ref("b.stl", "", Pose::from_axis_angle({0, 1, 0}, 0.3, {1, 2, 3}))};
+  p.body = {mesh_ref("b.stl", "", kBodyPose)};
   std::ofstream(dir / "problem.toml") << problem_toml(p, "a test\nwith two lines");
   auto back = load_problem(dir / "problem.toml");
   fs::remove_all(dir);
@@ -40,7 +47,7 @@ Problem round_trip(Problem p, const std::string& tag) {
 
 TEST(ProblemToml, EveryKeyReadsBack) {
   Problem p;
-  p.unit = "cm";
+  p.unit = "mm";  // (another unit would scale the lengths as they are read)
   p.reference_point = Vec3(0.1, -0.2, 1.0 / 3.0);
   p.start = Pose::from_axis_angle({1, 1, 0}, 0.7, {-4.5, 1e-9, 7});
   p.goal = Pose::from_axis_angle({0, 0, 1}, 25.0 * std::numbers::pi / 180.0, {0, -1150, 300});
@@ -55,16 +62,16 @@ TEST(ProblemToml, EveryKeyReadsBack) {
   p.deflection = 0.02;
   p.max_triangles = 12345;
   const Problem q = round_trip(p, "all");
-  EXPECT_EQ(q.unit, "cm");
+  EXPECT_EQ(q.unit, "mm");
   ASSERT_TRUE(q.reference_point);
-  EXPECT_EQ(*q.reference_point, *p.reference_point);
+  expect_same(*q.reference_point, *p.reference_point, "reference point");
   expect_same_pose(q.start, p.start, "start");
   ASSERT_TRUE(q.goal);
   expect_same_pose(*q.goal, *p.goal, "goal");
   EXPECT_FALSE(q.goal_outside);
   ASSERT_TRUE(q.bounds);
-  EXPECT_EQ(q.bounds->min, p.bounds->min);
-  EXPECT_EQ(q.bounds->max, p.bounds->max);
+  expect_same(q.bounds->min, p.bounds->min, "bounds.min");
+  expect_same(q.bounds->max, p.bounds->max, "bounds.max");
   EXPECT_EQ(q.rotation, RotationMode::limits);
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(q.rotation_limits[i][k], p.rotation_limits[i][k], 1e-15);
@@ -80,7 +87,7 @@ TEST(ProblemToml, EveryKeyReadsBack) {
   ASSERT_EQ(q.obstacles.size(), 1u);
   EXPECT_EQ(q.obstacles[0].file_unit, "mm");
   ASSERT_EQ(q.body.size(), 1u);
-  expect_same_pose(q.body[0].pose, p.body[0].pose, "body pose");
+  expect_same_pose(q.body[0].pose, kBodyPose, "body pose");
 }
 
 TEST(ProblemToml, GoalOutsideReadsBack) {
