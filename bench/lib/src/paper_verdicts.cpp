@@ -345,17 +345,19 @@ std::vector<std::string> peer_findings(const PaperRows& rows) {
     out.push_back(ratio_sentence(query_ratio_range(rows.queries, "fcl-obbrss", split, near, false), "FCL OBBRSS",
                                  "collide, near poses, " + trees + ", against FCL OBBRSS"));
   }
-  // FCL's builds against swept's serial PQP_FIT build with the paper's split rule.
+  // FCL's builds against swept's serial build of the baseline fitter (PQP_FIT) with the paper's
+  // split rule.
+  const Fitter base = baseline_fitter();
   for (const auto& peer : peers) {
     std::vector<Labelled> values;
     for (const MeshRow& m : rows.meshes) {
       const Spread& f = std::string(peer.engine) == "fcl-obbrss" ? m.fcl_obbrss_build_ms : m.fcl_rss_build_ms;
-      values.push_back({m.name, ratio_of(f, m.tree(Fitter::pqp, SplitRule::min_sa).build_ms).value});
+      values.push_back({m.name, ratio_of(f, m.tree(base, SplitRule::min_sa).build_ms).value});
     }
     const RangeOf r = range_of(values);
     out.push_back(r.rows == 0 ? std::string("build, ") + peer.name + ": not measured" + unmeasured_note(r) + "."
                               : std::string("build: ") + peer.name + " takes " + fmt_range(r, 2) +
-                                    " the CPU time of swept's serial PQP_FIT build (min-sa) over " +
+                                    " the CPU time of swept's serial " + paper_name(base) + " build (min-sa) over " +
                                     std::to_string(r.rows) + " meshes (medians)" + unmeasured_note(r) + ".");
   }
   return out;
