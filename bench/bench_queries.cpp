@@ -2,54 +2,26 @@
 // collide and distance on a CAD mesh pair at near-contact and far poses.
 //   bench_queries [--benchmark_filter=...]      (mesh pair: SWEPT_BENCH_A / SWEPT_BENCH_B,
 //                                                default occt/motor.stl against itself)
-#include "../apps/swept/seeded_rng.h"
+#include "swept/bench/fcl_model.h"
+#include "swept/bench/pose_sets.h"
 #include "swept/io/mesh_io.h"
 #include "swept/query/query.h"
 
 #include <benchmark/benchmark.h>
-#include <fcl/geometry/bvh/BVH_model.h>
-#include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
-#include <cmath>
-#include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
-#include <numbers>
 #include <string>
 #include <vector>
 
 namespace {
 
 using namespace swept;
-
-using Rng = swept::cli::SeededRng;
-
-std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl_model(const std::vector<Triangle>& tris) {
-  auto m = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-  std::vector<fcl::Vector3d> v;
-  std::vector<fcl::Triangle> f;
-  for (const Triangle& t : tris) {
-    const std::size_t base = v.size();
-    v.push_back(t.p);
-    v.push_back(t.q);
-    v.push_back(t.r);
-    f.emplace_back(base, base + 1, base + 2);
-  }
-  m->beginModel();
-  m->addSubModel(v, f);
-  m->endModel();
-  return m;
-}
-
-fcl::Transform3d to_fcl(const Pose& p) {
-  fcl::Transform3d t = fcl::Transform3d::Identity();
-  t.linear() = p.rotation;
-  t.translation() = p.translation;
-  return t;
-}
+using bench::fcl_model;
+using bench::to_fcl;
 
 /// The mesh pair, its trees and two pose sets, built once.
 struct Fixture {
@@ -75,31 +47,15 @@ struct Fixture {
       return m->merged().triangles;
     };
     const auto ta = load(pa), tb = load(pb);
-    Fixture f{build_bvh(ta).value(), build_bvh(tb).value(), fcl_model(ta), fcl_model(tb), {}, {}};
-    const Vec3 ca = bounds(ta).center(), cb = bounds(tb).center();
-    const double size = std::max(f.a.extent, f.b.extent);
-    Rng rng{42};
-    while (f.near.size() < 64) {
-      const Mat3 r = rng.rotation();
-      const Vec3 u = rng.direction();
-      auto place = [&](double s) { return Pose{r, ca + s * u - r * cb}; };
-      auto dist = [&](double s) { return distance(f.a, {}, f.b, place(s)).distance; };
-      double lo = 0, hi = size;
-      while (dist(hi) <= 0.01 * size) hi *= 2;
-      for (int it = 0; it < 80; ++it) {
-        const double mid = 0.5 * (lo + hi), d = dist(mid);
-        if (d <= 0) {
-          lo = mid;
-        } else if (d > 0.01 * size) {
-          hi = mid;
-        } else {
-          f.near.push_back(place(mid));
-          break;
-        }
-      }
-      f.far.push_back(place(size * (1.1 + 0.9 * rng.uniform())));
+    Fixture f{build_bvh(ta).value(), build_bvh(tb).value(), fcl_model<fcl::OBBRSSd>(ta), fcl_model<fcl::OBBRSSd>(tb), {}, {}};
+    // The benchmarks' one pose-set generator (swept/bench/pose_sets.h), 64 poses per set.
+    auto sets = bench::make_pose_sets(f.a, f.b, {.count = 64, .seed = 42});
+    f.near = std::move(sets[1].poses);
+    f.far = std::move(sets[2].poses);
+    if (f.near.empty() || f.far.empty()) {
+      std::cerr << "bench_queries: no near-contact or far poses found for " << pa << " and " << pb << "\n";
+      std::exit(1);
     }
-    f.far.resize(64);
     return f;
   }
 };

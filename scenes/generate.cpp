@@ -2,6 +2,7 @@
 #include "swept/scenes/modeling.h"
 #include "swept/scenes/scene_model.h"
 #include "swept/scenes/scenes.h"
+#include "swept/scenes/problem_toml.h"
 #include "swept/io/file_write.h"
 #include "swept/io/mesh_io.h"
 
@@ -121,53 +122,25 @@ std::string fmt(double v) {
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
-std::string vec3(const Vec3& v) {
-  std::string s = "[";
-  s.append(fmt(v.x())).append(", ").append(fmt(v.y())).append(", ").append(fmt(v.z())).append("]");
-  return s;
-}
-std::string quat(const Pose& p) {
-  const Quat q = p.quaternion();
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "[%.9f, %.9f, %.9f, %.9f]", q.x(), q.y(), q.z(), q.w());
-  return buf;
-}
-
 std::string problem_toml(const SceneModel& m, const SceneReport& r) {
-  std::string s;
-  std::string comment = m.comment;
-  s += "# swept scene " + r.name + " --scale " + (r.scale == Scale::paper ? "paper" : "test") + "\n# ";
-  for (char c : comment) {
-    if (c == '\n') {
-      s += "\n# ";
-    } else {
-      s += c;
-    }
-  }
-  s += "\n# BRepMesh linear deflection: body " + fmt(r.body_deflection) + " mm, obstacles " +
-       fmt(r.obstacle_deflection) + " mm; angular " + fmt(r.angular_deflection) + " rad.\n";
-  s += "# Triangles: body " + std::to_string(r.body_triangles) + ", obstacles " + std::to_string(r.obstacle_triangles) + ".\n\n";
-  s += "unit = \"mm\"\n";
-  for (const MeshFile& f : r.meshes) {
-    if (f.body) continue;
-    s += "\n[[obstacle]]\nfile = \"" + f.file + "\"\nfile_unit = \"mm\"\npose = { translation = [0, 0, 0] }\n";
-  }
-  for (const MeshFile& f : r.meshes) {
-    if (!f.body) continue;
-    s += "\n[[body]]\nfile = \"" + f.file + "\"\nfile_unit = \"mm\"\npose = { translation = [0, 0, 0] }\n";
-  }
-  s += "\n[start]\ntranslation = " + vec3(m.start.translation) + "\nquaternion = " + quat(m.start) + "\n";
-  s += "\n[goal]\n";
-  if (m.goal_outside) {
-    s += "outside = true\nmargin = " + fmt(m.goal_margin) + "\n";
-  } else {
-    s += "translation = " + vec3(m.goal.translation) + "\nquaternion = " + quat(m.goal) + "\n";
-  }
-  s += "\n[bounds]\nmin = " + vec3(m.bounds_min) + "\nmax = " + vec3(m.bounds_max) + "\n";
-  s += "\n[rotation]\nmode = \"free\"\n";
-  s += "\n[planner]\nclearance = " + fmt(m.clearance) +
-       "\ncontact_tolerance = 0.0\nfitter = \"inertia\"\ntime_limit = 60.0\nthreads = 2\n";
-  return s;
+  std::string comment = "swept scene " + r.name + " --scale " + (r.scale == Scale::paper ? "paper" : "test") + "\n" +
+                        m.comment + "\nBRepMesh linear deflection: body " + fmt(r.body_deflection) +
+                        " mm, obstacles " + fmt(r.obstacle_deflection) + " mm; angular " + fmt(r.angular_deflection) +
+                        " rad.\nTriangles: body " + std::to_string(r.body_triangles) + ", obstacles " +
+                        std::to_string(r.obstacle_triangles) + ".";
+  Problem p;
+  p.unit = "mm";
+  for (const MeshFile& f : r.meshes) (f.body ? p.body : p.obstacles).push_back(mesh_ref(f.file, "mm"));
+  p.start = m.start;
+  p.goal_outside = m.goal_outside;
+  if (m.goal_outside) p.goal_margin = m.goal_margin;
+  else p.goal = m.goal;
+  p.bounds = Aabb{m.bounds_min, m.bounds_max};
+  p.rotation = RotationMode::free;
+  p.clearance = m.clearance;
+  p.time_limit = 60.0;
+  p.threads = 2;
+  return scenes::problem_toml(p, comment);
 }
 
 SceneModel build(const std::string& name) {

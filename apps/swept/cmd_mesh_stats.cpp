@@ -1,4 +1,5 @@
 // `swept mesh-stats`: how widely triangle sizes and shapes spread in mesh and CAD files.
+#include "cli_options.h"
 #include "commands.h"
 #include "output.h"
 
@@ -18,11 +19,7 @@ namespace {
 
 struct MeshStatsOptions {
   std::vector<std::string> files;
-  double deflection = 0.1;
-  double angular_deflection = 0.5;
-  std::size_t max_triangles = ImportOptions{}.max_triangles;
-  std::string unit = "mm";
-  std::string file_unit;
+  ImportCliOptions import;
   bool json = false;
   bool markdown = false;
 };
@@ -35,13 +32,7 @@ void run(const MeshStatsOptions& o) {
   md += "\n|---|---:|---:|---:|---:|---:|\n";
   nlohmann::json meshes = nlohmann::json::array();
   for (const std::string& file : o.files) {
-    ImportOptions io;
-    io.unit = o.unit;
-    io.file_unit = o.file_unit;
-    io.linear_deflection = o.deflection;
-    io.angular_deflection = o.angular_deflection;
-    io.max_triangles = o.max_triangles;
-    auto model = import_mesh(file, io);
+    auto model = import_mesh(file, o.import.import_options());
     if (!model) throw std::runtime_error(model.error().message);
     const scenes::MeshStats s = scenes::mesh_stats(model->merged().triangles);
     table.add({file, fmt_int(s.triangles), fmt_int(s.degenerate), fmt_sci(s.area_ratio), fmt_fixed(s.aspect_median, 2),
@@ -49,7 +40,7 @@ void run(const MeshStatsOptions& o) {
     md += "| " + file + " | " + fmt_int(s.triangles) + " | " + fmt_int(s.degenerate) + " | " + fmt_sci(s.area_ratio) +
           " | " + fmt_fixed(s.aspect_median, 2) + " | " + fmt_fixed(100.0 * s.aspect_over_10, 1) + " % |\n";
     meshes.push_back({{"file", file},
-                      {"unit", o.unit},
+                      {"unit", o.import.unit},
                       {"triangles", s.triangles},
                       {"degenerate_triangles", s.degenerate},
                       {"area_min", s.area_min},
@@ -80,15 +71,7 @@ void add_mesh_stats_command(CLI::App& app) {
       "A file with several parts counts as one mesh.");
   cmd->add_option("files", o->files, "Mesh or CAD files (STL, OBJ, PLY, OFF, glTF/GLB, DAE, STEP, IGES, BREP)")
       ->required()->check(CLI::ExistingFile);
-  cmd->add_option("--deflection", o->deflection, "BRepMesh linear deflection for CAD files, in --unit")
-      ->capture_default_str()->check(CLI::PositiveNumber);
-  cmd->add_option("--angular-deflection", o->angular_deflection, "BRepMesh angular deflection for CAD files, radians")
-      ->capture_default_str()->check(CLI::PositiveNumber);
-  cmd->add_option("--max-triangles", o->max_triangles,
-                  "Most triangles a CAD file may tessellate into (estimated before meshing; past it: exit 1)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
-  cmd->add_option("--unit", o->unit, "Length unit of the output: m, cm, mm, um, in, ft")->capture_default_str();
-  cmd->add_option("--file-unit", o->file_unit, "Unit of mesh files' coordinates (default mm; CAD files carry their own)");
+  add_import_options(*cmd, o->import);
   cmd->add_flag("--json", o->json, "Print one JSON document instead of the table");
   cmd->add_flag("--markdown", o->markdown, "Print a Markdown table instead of the aligned one");
   cmd->callback([o] { run(*o); });

@@ -1,4 +1,5 @@
 // `swept plan`: a certified, deterministic disassembly path for a problem file.
+#include "cli_options.h"
 #include "commands.h"
 
 #include "swept/plan/planner.h"
@@ -35,8 +36,7 @@ std::string hex(std::uint64_t h) {
 void run(const PlanCliOptions& o) {
   auto problem = load_problem(o.problem);
   if (!problem) throw std::runtime_error(problem.error().message);
-  if (!o.fitter.empty() && !parse_fitter(o.fitter, problem->build.fitter))
-    throw std::runtime_error("unknown fitter '" + o.fitter + "' (" + fitter_names() + ")");
+  if (!o.fitter.empty()) problem->build.fitter = fitters_from(o.fitter, false).front();
   if (o.time_limit > 0) problem->time_limit = o.time_limit;
   if (o.threads >= 0) problem->threads = o.threads;
 
@@ -132,7 +132,7 @@ void add_plan_command(CLI::App& app) {
       "the whole continuous motion. Exit 0: solved; 2: no path within the limits (the message says\n"
       "which: time, bounds or resolution); 1: bad input.");
   cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
-  cmd->add_option("--fitter", o->fitter, "Override the fitter: " + fitter_names(" | "));
+  add_fitter_option(*cmd, o->fitter, "Override the fitter", false);
   cmd->add_option("--time-limit", o->time_limit, "Override the time limit, seconds")->check(CLI::PositiveNumber);
   cmd->add_option("--threads", o->threads, "Override the thread count (0: all cores); the same path at any count (tested: 1, 2, 4, 8)")
       ->check(CLI::NonNegativeNumber);

@@ -1,6 +1,6 @@
-// The sentences `swept bench paper` draws from its rows (apps/swept/paper_verdicts.h), on
+// The sentences `swept bench paper` draws from its rows (bench/lib: swept/bench/paper_verdicts.h), on
 // hand-made rows: ranges cover every row, one verdict per claim, and the verdict rules.
-#include "paper_verdicts.h"
+#include "swept/bench/paper_verdicts.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace swept::cli {
+namespace swept::bench {
 namespace {
 
 Spread runs(std::vector<double> v) { return spread_of(std::move(v)); }
@@ -19,8 +19,8 @@ Spread runs(std::vector<double> v) { return spread_of(std::move(v)); }
 MeshRow mesh(const std::string& name, double sa_pqp, double sa_inertia, double build_pqp, double build_inertia) {
   MeshRow m;
   m.name = name;
-  for (const SplitRule s : kSplits)
-    for (const Fitter f : kFitters) {
+  for (const SplitRule s : split_rules())
+    for (const Fitter f : fitters()) {
       TreeFigures t;
       t.fitter = f;
       t.split = s;
@@ -255,4 +255,4 @@ TEST(PaperVerdicts, BuildPeersCoverEveryMesh) {
 }
 
 }  // namespace
-}  // namespace swept::cli
+}  // namespace swept::bench

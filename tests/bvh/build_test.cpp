@@ -1,4 +1,5 @@
 // The RSS tree: containment invariant, determinism across thread counts, structure.
+#include "support/tables.h"
 #include "support/test_support.h"
 #include "swept/bvh/bvh.h"
 #include "swept/bvh/fitter.h"
@@ -15,8 +16,8 @@ namespace {
 
 using test::Rng;
 
-const Fitter kFitters[] = {Fitter::pqp, Fitter::rapid2, Fitter::inertia};
-const SplitRule kSplits[] = {SplitRule::min_sa, SplitRule::largest};
+const std::vector<Fitter> kFitters = swept::test::every_fitter();
+const std::vector<SplitRule> kSplits = swept::test::every_split_rule();
 
 // Triangle range [begin, end) of every node (leaves' ranges are stored; internal nodes cover
 // their children's adjacent ranges).

@@ -1,4 +1,5 @@
 // The containment invariant on the real CAD of ../shared/data, for every fitter and split rule.
+#include "support/tables.h"
 #include "support/test_support.h"
 #include "swept/bvh/bvh.h"
 #include "swept/io/mesh_io.h"
@@ -50,8 +51,8 @@ TEST(CadContainment, EveryVertexInsideLeafAndAncestors) {
     auto model = import_mesh(*data / f, options);
     ASSERT_TRUE(model) << model.error().message;
     const auto tris = model->merged().triangles;
-    for (Fitter fitter : {Fitter::pqp, Fitter::rapid2, Fitter::inertia})
-      for (SplitRule split : {SplitRule::min_sa, SplitRule::largest}) {
+    for (Fitter fitter : swept::test::every_fitter())
+      for (SplitRule split : swept::test::every_split_rule()) {
         auto bvh = build_bvh(tris, {.fitter = fitter, .split = split});
         ASSERT_TRUE(bvh) << f << ": " << bvh.error().message;
         double worst;

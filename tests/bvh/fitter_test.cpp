@@ -1,4 +1,5 @@
 // Fitters (SPEC §2.1) against hand-computed values and the paper's formulas evaluated literally.
+#include "support/tables.h"
 #include "support/test_support.h"
 #include "swept/bvh/fitter.h"
 
@@ -107,7 +108,7 @@ TEST(Fitter, CubeHandComputed) {
 
 TEST(Fitter, MatchesLiteralFormulas) {
   Rng rng(7);
-  for (Fitter f : {Fitter::pqp, Fitter::rapid2, Fitter::inertia}) {
+  for (Fitter f : swept::test::every_fitter()) {
     for (int trial = 0; trial < 20; ++trial) {
       auto tris = test::random_triangles(rng, 1 + trial * 7, 10.0, 3.0, rng.vec(-5, 5));
       Vec3 split;
@@ -128,7 +129,7 @@ TEST(Fitter, InvariantUnderFarTranslationAndRotation) {
   const auto tris = test::random_triangles(rng, 200, 10.0, 4.0);
   const Pose moved{rng.rotation(), Vec3(1e6, -1e6, 1e6)};
   const auto far = test::transformed(tris, moved);
-  for (Fitter f : {Fitter::pqp, Fitter::rapid2, Fitter::inertia}) {
+  for (Fitter f : swept::test::every_fitter()) {
     const Fit a = fit(tris, f), b = fit(far, f);
     for (int k = 0; k < 3; ++k) expect_same_axis(moved.rotation * a.axes.col(k), b.axes.col(k), 1e-9);
     EXPECT_NEAR((moved.apply(a.split_point) - b.split_point).norm(), 0, 1e-9 * 10.0);

@@ -23,6 +23,7 @@
 //
 // The tests also print, without asserting it, how often the other rule would have chosen another
 // candidate.
+#include "support/tables.h"
 #include "support/test_support.h"
 #include "swept/bvh/bvh.h"
 #include "swept/bvh/fitter.h"
@@ -240,8 +241,7 @@ class MinSaRules : public ::testing::TestWithParam<SplitRule> {};
 TEST_P(MinSaRules, EveryCheckedNodeKeepsTheCheapestCandidateOnSeededSets) {
   const SplitRule rule = GetParam();
   test::Rng rng(2024);
-  for (const FitterInfo& row : all_fitters()) {
-    const Fitter fitter = row.fitter;
+  for (Fitter fitter : swept::test::every_fitter()) {
     PaperComparison paper;
     int checked = 0, roots = 0;
     for (int trial = 0; trial < 12; ++trial) {

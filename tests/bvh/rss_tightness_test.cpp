@@ -11,6 +11,7 @@
 // - the RSS around the points' bounding box (rectangle: the box's e1 × e2 extent, radius: half
 //   its e3 extent) contains them, so the fit is no larger than it;
 // - how far the edges could still move inwards is measured and printed, not asserted (see Slack).
+#include "support/tables.h"
 #include "support/test_support.h"
 #include "swept/bvh/bvh.h"
 #include "swept/bvh/fitter.h"
@@ -184,7 +185,7 @@ TEST(RssTightness, BoxFromTheFittersAxes) {
     EXPECT_NEAR((v.center - pose.apply(Vec3(2, 1, 0.5))).norm(), 0.0, 1e-7);
     EXPECT_NEAR(surface_area(v), 2 * 4 * 2 + 2 * std::numbers::pi * 6 * 0.5 + std::numbers::pi, 1e-6);
     // Every fitter's RSS of the box is tight for its own axes.
-    for (Fitter g : {Fitter::pqp, Fitter::rapid2, Fitter::inertia})
+    for (Fitter g : swept::test::every_fitter())
       expect_tight(fit_rss(box, fit(box, g).axes), vertices(box), std::string("box, ") + std::string(to_string(g)));
   }
 }
@@ -245,7 +246,7 @@ TEST(RssTightness, SeededSetsEveryFitterAndRandomAxes) {
     const auto pts = vertices(tris);
     const std::string what = "trial " + std::to_string(trial);
     expect_tight(fit_rss(tris, rng.rotation()), pts, what + ", random axes", &slack);
-    for (Fitter f : {Fitter::pqp, Fitter::rapid2, Fitter::inertia})
+    for (Fitter f : swept::test::every_fitter())
       expect_tight(fit_rss(tris, fit(tris, f).axes), pts, what + ", " + std::string(to_string(f)), &slack);
   }
   slack.print("fit_rss on seeded sets");
@@ -256,8 +257,8 @@ TEST(RssTightness, EveryNodeOfABuiltTreeIsTight) {
   // vertices outside the starting rectangle): each node must still be tight for its own frame.
   Rng rng(91);
   Slack slack;
-  for (Fitter f : {Fitter::pqp, Fitter::rapid2, Fitter::inertia})
-    for (SplitRule s : {SplitRule::min_sa, SplitRule::largest}) {
+  for (Fitter f : swept::test::every_fitter())
+    for (SplitRule s : swept::test::every_split_rule()) {
       const auto tris = test::random_triangles(rng, 400, 20.0, 3.0, rng.vec(-1e3, 1e3));
       auto bvh = build_bvh(tris, {.fitter = f, .split = s});
       ASSERT_TRUE(bvh);

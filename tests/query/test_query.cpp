@@ -1,6 +1,7 @@
 // collide / distance / tolerance against the all-pairs oracle on seeded meshes and poses,
 // for every fitter: random soups, slivers and degenerate triangles, touching and parallel
 // boxes, and a model far from the origin.
+#include "support/tables.h"
 #include "swept/query/query.h"
 
 #include "query_oracle.h"
@@ -220,7 +221,7 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fitters, QueryOracle,
-                         ::testing::Values(Fitter::inertia, Fitter::pqp, Fitter::rapid2),
+                         ::testing::ValuesIn(swept::test::every_fitter()),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
 TEST(QueryConcurrency, ManyThreadsGiveTheSerialResults) {

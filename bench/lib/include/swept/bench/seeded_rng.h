@@ -1,14 +1,14 @@
 #pragma once
 /// The seeded generator of the benchmarks' pose sets (SplitMix64): the same poses on every
-/// platform, no std::*_distribution. Shared by `swept bench queries`, `swept bench paper` and
-/// bench/bench_queries.
+/// platform, no std::*_distribution. Its one user is make_pose_sets (pose_sets.h).
+
 #include "swept/geometry/types.h"
 
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 
-namespace swept::cli {
+namespace swept::bench {
 
 struct SeededRng {
   std::uint64_t state;
@@ -37,4 +37,4 @@ struct SeededRng {
   }
 };
 
-}  // namespace swept::cli
+}  // namespace swept::bench

@@ -1,14 +1,15 @@
 #pragma once
-/// FCL 0.7 as a peer for side-by-side comparisons (`swept bench queries`). Only the CLI and
-/// the benchmarks use FCL; the swept libraries never do.
+/// FCL 0.7 as a peer for side-by-side comparisons (`swept bench queries`, `swept bench paper`,
+/// bench_queries), behind a small interface that keeps FCL's headers out of the callers.
 #include "swept/geometry/pose.h"
 #include "swept/geometry/types.h"
 
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
-namespace swept::cli {
+namespace swept::bench {
 
 /// FCL's bounding-volume types compared against swept's RSS trees.
 enum class FclVolume { obbrss, rss };
@@ -19,7 +20,7 @@ std::string_view fcl_engine_name(FclVolume v);
 /// An FCL BVHModel of a triangle soup (built once, immutable afterwards).
 class FclMesh {
  public:
-  FclMesh(const std::vector<Triangle>& triangles, FclVolume volume);
+  FclMesh(std::span<const Triangle> triangles, FclVolume volume);
   ~FclMesh();
   FclMesh(const FclMesh&) = delete;
   FclMesh& operator=(const FclMesh&) = delete;
@@ -35,4 +36,4 @@ class FclMesh {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace swept::cli
+}  // namespace swept::bench

@@ -1,15 +1,15 @@
 // The verdicts and ranges of `swept bench paper` (see paper_verdicts.h for the two rules every
 // sentence follows).
-#include "paper_verdicts.h"
+#include "swept/bench/paper_verdicts.h"
 
-#include "output.h"
+#include "swept/bench/output.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-namespace swept::cli {
+namespace swept::bench {
 
 Spread spread_of(std::vector<double> v) {
   Spread s;
@@ -41,14 +41,6 @@ std::string fmt_ratio(const Ratio& r, bool range) {
 
 std::string config_name(Fitter f, SplitRule s) { return std::string(to_string(f)) + "/" + std::string(to_string(s)); }
 
-std::string upper_name(Fitter f) {
-  switch (f) {
-    case Fitter::pqp: return "PQP_FIT";
-    case Fitter::rapid2: return "RAPID2_FIT";
-    case Fitter::inertia: return "INERTIA_FIT";
-  }
-  return "?";
-}
 
 const TreeFigures& MeshRow::tree(Fitter f, SplitRule s) const {
   for (const TreeFigures& t : trees)
@@ -171,7 +163,7 @@ std::vector<ClaimVerdict> assess_claims(const PaperRows& r, int runs) {
                    "cases)"};
     std::ostringstream s;
     int both_min_sa = 0, meshes = 0;
-    for (const SplitRule sp : kSplits) {
+    for (const SplitRule sp : split_rules()) {
       int sa = 0, vol = 0, both = 0, n = 0, sa_r = 0, vol_r = 0;
       std::vector<Labelled> sa_ratio, vol_ratio;
       for (const MeshRow& m : r.meshes) {
@@ -308,7 +300,7 @@ RangeOf query_ratio_range(std::span<const QueryRow> queries, const std::string& 
     const QueryRow* f = find_query(queries, q.scene, q.set, peer);
     const std::string fitter = q.engine.substr(6, q.engine.size() - 6 - suffix.size());
     Fitter fit = Fitter::pqp;
-    const std::string name = parse_fitter(fitter, fit) ? upper_name(fit) : fitter;
+    const std::string name = parse_fitter(fitter, fit) ? std::string(info(fit).paper_name) : fitter;
     const Ratio ratio = f ? ratio_of(distance ? f->distance_us : f->collide_us, distance ? q.distance_us : q.collide_us)
                           : Ratio{};
     values.push_back({q.scene + " " + q.set + " " + name, ratio.value});
@@ -343,7 +335,7 @@ std::vector<std::string> peer_findings(const PaperRows& rows) {
     const char* engine;
     const char* name;
   } peers[] = {{"fcl-obbrss", "FCL OBBRSS"}, {"fcl-rss", "FCL RSS"}};
-  for (const SplitRule split : kSplits) {
+  for (const SplitRule split : split_rules()) {
     const std::string trees = std::string(to_string(split)) + " trees";
     for (const auto& peer : peers)
       out.push_back(ratio_sentence(query_ratio_range(rows.queries, peer.engine, split, near_far, true), peer.name,
@@ -353,20 +345,22 @@ std::vector<std::string> peer_findings(const PaperRows& rows) {
     out.push_back(ratio_sentence(query_ratio_range(rows.queries, "fcl-obbrss", split, near, false), "FCL OBBRSS",
                                  "collide, near poses, " + trees + ", against FCL OBBRSS"));
   }
-  // FCL's builds against swept's serial PQP_FIT build with the paper's split rule.
+  // FCL's builds against swept's serial build of the baseline fitter (PQP_FIT) with the paper's
+  // split rule.
+  const Fitter base = baseline_fitter();
   for (const auto& peer : peers) {
     std::vector<Labelled> values;
     for (const MeshRow& m : rows.meshes) {
       const Spread& f = std::string(peer.engine) == "fcl-obbrss" ? m.fcl_obbrss_build_ms : m.fcl_rss_build_ms;
-      values.push_back({m.name, ratio_of(f, m.tree(Fitter::pqp, SplitRule::min_sa).build_ms).value});
+      values.push_back({m.name, ratio_of(f, m.tree(base, SplitRule::min_sa).build_ms).value});
     }
     const RangeOf r = range_of(values);
     out.push_back(r.rows == 0 ? std::string("build, ") + peer.name + ": not measured" + unmeasured_note(r) + "."
                               : std::string("build: ") + peer.name + " takes " + fmt_range(r, 2) +
-                                    " the CPU time of swept's serial PQP_FIT build (min-sa) over " +
+                                    " the CPU time of swept's serial " + paper_name(base) + " build (min-sa) over " +
                                     std::to_string(r.rows) + " meshes (medians)" + unmeasured_note(r) + ".");
   }
   return out;
 }
 
-}  // namespace swept::cli
+}  // namespace swept::bench

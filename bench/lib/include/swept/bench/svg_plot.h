@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace swept::cli {
+namespace swept::bench {
 
 /// One series of a grouped bar chart: one value per group (NaN: no bar for that group).
 struct BarSeries {
@@ -34,4 +34,4 @@ std::string render_svg(const BarChart& chart);
 /// Writes `render_svg(chart)` to `file`. Throws std::runtime_error naming the file on failure.
 void write_svg(const BarChart& chart, const std::string& file);
 
-}  // namespace swept::cli
+}  // namespace swept::bench

@@ -1,7 +1,7 @@
 // SVG grouped bar charts for the benchmark reports.
-#include "svg_plot.h"
+#include "swept/bench/svg_plot.h"
 
-#include "output.h"
+#include "swept/bench/output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace swept::cli {
+namespace swept::bench {
 namespace {
 
 std::string num(double v) {
@@ -187,4 +187,4 @@ void write_svg(const BarChart& chart, const std::string& file) {
   write_output(file, render_svg(chart));
 }
 
-}  // namespace swept::cli
+}  // namespace swept::bench

@@ -14,12 +14,13 @@
 
 #include <cstdint>
 #include <limits>
+#include <ranges>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace swept::cli {
+namespace swept::bench {
 
 // ---- statistics --------------------------------------------------------------------------------
 
@@ -48,13 +49,18 @@ std::string fmt_ratio(const Ratio& r, bool range);
 
 // ---- the rows ----------------------------------------------------------------------------------
 
-inline constexpr Fitter kFitters[] = {Fitter::pqp, Fitter::rapid2, Fitter::inertia};
-inline constexpr SplitRule kSplits[] = {SplitRule::min_sa, SplitRule::largest};
+/// The fitters measured: the library's table, all_fitters(), in its order (PQP_FIT first: the
+/// baseline of every ratio). Adding a row there adds a column to every table here.
+inline auto fitters() { return all_fitters() | std::views::transform(&FitterInfo::fitter); }
+/// The fitter every ratio is taken against: the table's first row (PQP_FIT).
+inline Fitter baseline_fitter() { return all_fitters().front().fitter; }
+/// A fitter as the paper names it, as a string: "INERTIA_FIT".
+inline std::string paper_name(Fitter f) { return std::string(info(f).paper_name); }
+/// The split rules measured: the library's table, all_split_rules(), in its order.
+inline auto split_rules() { return all_split_rules() | std::views::transform(&SplitRuleInfo::rule); }
 
 /// "pqp/min-sa".
 std::string config_name(Fitter f, SplitRule s);
-/// "PQP_FIT", "RAPID2_FIT", "INERTIA_FIT".
-std::string upper_name(Fitter f);
 
 /// One tree of Tables II and IV.
 struct TreeFigures {
@@ -192,4 +198,4 @@ std::vector<std::string> peer_findings(const PaperRows& rows);
 RangeOf query_ratio_range(std::span<const QueryRow> queries, const std::string& peer, SplitRule split,
                           std::span<const std::string> sets, bool distance);
 
-}  // namespace swept::cli
+}  // namespace swept::bench

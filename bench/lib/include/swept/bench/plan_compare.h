@@ -1,0 +1,99 @@
+#pragma once
+/// The planner-vs-OMPL benchmark (bench_plan) as a library: swept's certified, deterministic
+/// planner against OMPL's RRTConnect with FCL collision checking, on the same problems in one
+/// run. Issue goal: solve every problem OMPL solves at ≤ 1/3 of its median time, and solve the
+/// narrow-clearance disassembly problems it does not.
+///
+/// swept's side: PlanResult from plan() on a prebuilt scene (tree build reported apart), once per
+/// fitter of all_fitters(), and the problem's fitter as many times as OMPL has seeds (at least
+/// twice): its median time is the one compared, and every run must give the same path.
+/// OMPL's side: see ompl_peer.h.
+#include "swept/plan/planner.h"
+#include "swept/plan/problem.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swept::bench {
+
+/// One benchmark problem: a generated box problem (meshes in memory) or a CAD scene's problem
+/// file (meshes loaded by load_scene).
+struct PlanCase {
+  std::string name;
+  Problem problem;
+  std::optional<TriangleSoup> obstacles, body;  ///< set for the box problems
+  std::string kind;                             ///< "box" or "cad"
+};
+
+struct CompareOptions {
+  double time_limit = 60.0;   ///< s, for both planners
+  int seeds = 5;              ///< OMPL runs (seeds 1..N); swept's problem fitter runs as often
+  int threads = 0;            ///< swept's threads (0: all cores)
+  bool collide_only = false;  ///< OMPL's validity check without the clearance
+};
+
+struct SweptRun {
+  Fitter fitter = Fitter::inertia;
+  PlanResult result;
+  double plan_ms = 0.0;   ///< wall time of plan() on the prebuilt scene (no tree build)
+  double build_ms = 0.0;  ///< building both trees
+};
+
+struct OmplRun {
+  std::uint32_t seed = 0;
+  bool solved = false;
+  double ms = 0.0;
+  std::string status;
+  std::size_t waypoints = 0;
+  std::uint64_t checks = 0;  ///< state validity checks
+  /// The solution path re-checked between OMPL's samples by swept's certified motion query
+  /// (margin 0): "free", "collides" (a pose in contact was found), or "undecided".
+  std::string verified;
+};
+
+/// One problem's results.
+struct CompareRow {
+  std::string name, kind;
+  std::size_t body_triangles = 0, obstacle_triangles = 0;
+  double clearance = 0.0;
+  std::string rotation;
+  std::vector<SweptRun> swept;  ///< [0], [1]: the problem's fitter twice; then the other fitters
+  bool deterministic = false;
+  std::vector<OmplRun> ompl;
+  double ompl_fcl_build_ms = 0.0;
+  std::string error;  ///< set when the problem could not be loaded
+  /// plan() times of every run of the problem's fitter (swept is deterministic: the same path
+  /// each time, so repeats measure the timing spread only).
+  std::vector<double> main_ms;
+
+  const SweptRun& main() const { return swept.front(); }
+  /// Median over the runs of the problem's fitter: compared with OMPL's median over seeds.
+  double swept_median() const;
+  int ompl_colliding() const;
+  int ompl_successes() const;
+  /// Median over all seeds, failures counted at the time they took (the limit).
+  double ompl_median() const;
+  double ompl_min() const;
+  double ompl_max() const;
+  /// The issue's goal for this problem: "met: >= 3x", "MISSED: OMPL solves it", ...
+  std::string verdict() const;
+};
+
+/// Runs both planners on one problem (progress lines on stderr).
+CompareRow run_case(const PlanCase& c, const CompareOptions& o);
+
+/// The two tables bench_plan prints (problems side by side; swept per fitter), on stdout.
+void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o);
+
+/// bench_plan's JSON (read back by `swept bench paper`).
+nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions& o);
+/// The rows of a bench_plan JSON: every figure to_json() writes except the swept runs' path
+/// statistics (PlanResult keeps only status and message). Throws std::runtime_error on an
+/// unknown fitter, nlohmann::json::exception on a malformed document.
+std::vector<CompareRow> rows_from_json(const nlohmann::json& j);
+
+}  // namespace swept::bench

@@ -1,0 +1,103 @@
+// The planner-vs-OMPL benchmark, one problem: see swept/bench/plan_compare.h.
+#include "swept/bench/plan_compare.h"
+
+#include "swept/bench/fcl_model.h"
+#include "swept/bench/ompl_peer.h"
+#include "swept/bench/search_space.h"
+#include "swept/bench/timing.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+namespace swept::bench {
+namespace {
+
+/// The problem's tree settings with another fitter.
+BuildConfig build_config(const Problem& problem, Fitter fitter) {
+  BuildConfig config = problem.build;
+  config.fitter = fitter;
+  return config;
+}
+
+Result<PlanScene> scene_for(const PlanCase& c, Fitter fitter) {
+  if (c.obstacles) return make_scene(*c.obstacles, *c.body, build_config(c.problem, fitter), c.problem.reference_point);
+  return load_scene(c.problem, build_config(c.problem, fitter));
+}
+
+SweptRun run_swept(const PlanCase& c, const PlanScene& scene, Fitter fitter, double limit, int threads) {
+  SweptRun run;
+  run.fitter = fitter;
+  run.build_ms = scene.build_ms;
+  PlanOptions options;
+  options.time_limit = limit;
+  options.threads = threads;
+  const auto t0 = Clock::now();
+  run.result = plan(c.problem, scene, options);
+  run.plan_ms = ms_since(t0);
+  return run;
+}
+
+}  // namespace
+
+CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
+  const double limit = o.time_limit;
+  const int seeds = o.seeds, threads = o.threads;
+  CompareRow row;
+  row.name = c.name;
+  row.kind = c.kind;
+  row.clearance = c.problem.clearance;
+  row.rotation = c.problem.rotation == RotationMode::none ? "none" : c.problem.rotation == RotationMode::free ? "free" : "limits";
+  std::vector<Fitter> fitters{c.problem.build.fitter, c.problem.build.fitter};
+  for (const FitterInfo& f : all_fitters())
+    if (f.fitter != c.problem.build.fitter) fitters.push_back(f.fitter);
+  std::optional<PlanScene> main_scene;
+  for (std::size_t i = 0; i < fitters.size(); ++i) {
+    if (i == 1 && main_scene) {  // the determinism check reuses the scene
+      row.swept.push_back(run_swept(c, *main_scene, fitters[i], limit, threads));
+    } else {
+      auto scene = scene_for(c, fitters[i]);
+      if (!scene) {
+        row.error = scene.error().message;
+        return row;
+      }
+      row.swept.push_back(run_swept(c, *scene, fitters[i], limit, threads));
+      if (i == 0) main_scene = std::move(*scene);
+    }
+    const SweptRun& s = row.swept.back();
+    std::fprintf(stderr, "  swept %-8s %-22s plan %10.1f ms  build %7.1f ms  waypoints %zu\n", std::string(to_string(s.fitter)).c_str(),
+                 std::string(status_name(s.result.status)).c_str(), s.plan_ms, s.build_ms, s.result.path.poses.size());
+  }
+  // More runs of the problem's fitter, as many in all as OMPL gets seeds (at least two): the
+  // median time, and every run must give the same path.
+  const PlanResult& first = row.swept[0].result;
+  auto same = [&](const PlanResult& r) { return r.status == first.status && r.path_hash == first.path_hash; };
+  row.deterministic = same(row.swept[1].result);
+  row.main_ms = {row.swept[0].plan_ms, row.swept[1].plan_ms};
+  // (A run that ends on the time limit is not repeated: its median is the limit anyway.)
+  for (int k = 2; first.status != PlanStatus::no_path_time && k < seeds; ++k) {
+    const SweptRun again = run_swept(c, *main_scene, c.problem.build.fitter, limit, threads);
+    row.main_ms.push_back(again.plan_ms);
+    row.deterministic = row.deterministic && same(again.result);
+  }
+  row.body_triangles = main_scene->body.triangles.size();
+  row.obstacle_triangles = main_scene->obstacles.triangles.size();
+
+  const SearchSpace g = planner_search_space(c.problem, *main_scene);
+  const auto t0 = Clock::now();
+  const auto body = fcl_model<fcl::OBBRSSd>(main_scene->body.triangles);
+  const auto obstacles = fcl_model<fcl::OBBRSSd>(main_scene->obstacles.triangles);
+  row.ompl_fcl_build_ms = ms_since(t0);
+  for (int k = 0; k < seeds; ++k) {
+    const auto seed = static_cast<std::uint32_t>(k + 1);
+    row.ompl.push_back(run_ompl(c.problem, g, *main_scene, *body, *obstacles, seed, o));
+    const OmplRun& r = row.ompl.back();
+    std::fprintf(stderr, "  ompl  seed %-3u %-22s %10.1f ms  checks %llu  waypoints %zu%s%s\n", r.seed, r.status.c_str(),
+                 r.ms, static_cast<unsigned long long>(r.checks), r.waypoints, r.solved ? "  path " : "",
+                 r.verified.c_str());
+  }
+  return row;
+}
+
+}  // namespace swept::bench

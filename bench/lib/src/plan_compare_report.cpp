@@ -1,0 +1,69 @@
+// bench_plan's output: the two tables on stdout and the JSON that `swept bench paper` reads back.
+#include "swept/bench/plan_compare.h"
+
+#include "swept/bench/timing.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+namespace swept::bench {
+namespace {
+
+std::string fmt(double v, int prec = 1) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", prec, v);
+  return buf;
+}
+
+}  // namespace
+
+void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) {
+  const double limit = o.time_limit;
+  const int seeds = o.seeds, threads = o.threads;
+  const bool collide_only = o.collide_only;
+  std::printf("\nPlanner side by side: swept (fitter of the problem, %s threads) vs OMPL RRTConnect + FCL, "
+              "%d seeds, %.0f s limit\n",
+              threads > 0 ? std::to_string(threads).c_str() : "all", seeds, limit);
+  if (collide_only) std::printf("OMPL's validity check: fcl::collide only (no clearance; swept still certifies it)\n");
+  std::printf("%-18s %9s %11s %11s %-20s %5s | %7s %11s %21s %6s | %8s  %s\n", "problem", "clearance", "swept ms",
+              "(+build)", "swept status", "wayp", "OMPL ok", "median ms", "min-max ms", "hit", "ratio", "goal");
+  for (const CompareRow& r : rows) {
+    if (!r.error.empty()) {
+      std::printf("%-18s  not run: %s\n", r.name.c_str(), r.error.c_str());
+      continue;
+    }
+    const SweptRun& s = r.main();
+    const std::string ok = std::to_string(r.ompl_successes()) + "/" + std::to_string(r.ompl.size());
+    const std::string range = fmt(r.ompl_min()) + "-" + fmt(r.ompl_max());
+    std::printf("%-18s %9g %11s %11s %-20s %5zu | %7s %11s %21s %6d | %8s  %s\n", r.name.c_str(), r.clearance,
+                fmt(r.swept_median()).c_str(), fmt(r.swept_median() + s.build_ms).c_str(), std::string(status_name(s.result.status)).c_str(),
+                s.result.path.poses.size(), ok.c_str(), fmt(r.ompl_median()).c_str(), range.c_str(), r.ompl_colliding(),
+                fmt(r.ompl_median() / std::max(r.swept_median(), 1e-9), 2).c_str(), r.verdict().c_str());
+  }
+  std::printf("swept ms: plan() on the prebuilt trees, median of as many runs as OMPL has seeds (same path each run); "
+              "(+build): with the tree build. OMPL ok: exact solutions; "
+              "median over all seeds, failures counted at the limit; hit: OMPL solutions that swept's certified "
+              "motion check finds in contact between OMPL's discrete motion samples; ratio: OMPL median / swept ms.\n");
+  std::printf("\nswept per fitter (plan ms of the first run without the tree build; build ms; status) and determinism\n");
+  std::printf("%-18s", "problem");
+  for (const FitterInfo& f : all_fitters()) std::printf(" %28s", std::string(f.name).c_str());
+  std::printf("  %s\n", "same hash every run");
+  for (const CompareRow& r : rows) {
+    if (!r.error.empty()) continue;
+    std::printf("%-18s", r.name.c_str());
+    for (const FitterInfo& fi : all_fitters()) {
+      const auto it = std::find_if(r.swept.begin(), r.swept.end(), [&](const SweptRun& s) { return s.fitter == fi.fitter; });
+      const std::string cell = fmt(it->plan_ms) + " +" + fmt(it->build_ms) + " " +
+                               (it->result.solved() ? std::string("ok") : std::string(status_name(it->result.status)));
+      std::printf(" %28s", cell.c_str());
+    }
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(r.main().result.path_hash));
+    std::printf("  %s (%s)\n", r.deterministic ? "yes" : "NO", hash);
+  }
+  std::fflush(stdout);
+}
+
+}  // namespace swept::bench

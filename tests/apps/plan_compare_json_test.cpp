@@ -1,0 +1,74 @@
+// bench_plan's JSON, written by to_json() and read back by rows_from_json() for `swept bench
+// paper` (bench/lib: plan_compare_rows.cpp): the figures the paper benchmark reports survive.
+#include "swept/bench/plan_compare.h"
+#include "swept/bench/timing.h"
+
+#include <gtest/gtest.h>
+
+namespace swept::bench {
+namespace {
+
+CompareRow row() {
+  CompareRow r;
+  r.name = "t_slot";
+  r.kind = "box";
+  r.clearance = 0.05;
+  r.rotation = "free";
+  r.body_triangles = 24;
+  r.obstacle_triangles = 36;
+  for (const FitterInfo& f : all_fitters()) {
+    SweptRun s;
+    s.fitter = f.fitter;
+    s.plan_ms = 10.0 + static_cast<double>(s.fitter == Fitter::inertia);
+    s.build_ms = 0.5;
+    s.result.status = s.fitter == Fitter::pqp ? PlanStatus::no_path_time : PlanStatus::solved;
+    r.swept.push_back(s);
+  }
+  r.deterministic = true;
+  r.main_ms = {11.0, 12.0};
+  r.ompl_fcl_build_ms = 3.5;
+  for (std::uint32_t seed = 1; seed <= 3; ++seed)
+    r.ompl.push_back({.seed = seed, .solved = seed != 2, .ms = 100.0 * seed, .status = "Exact solution",
+                      .waypoints = 5, .checks = 1000, .verified = seed == 3 ? "collides" : "free"});
+  return r;
+}
+
+TEST(PlanCompareJson, RowsReadBack) {
+  CompareRow failed;
+  failed.name = "air-cleaner";
+  failed.kind = "cad";
+  failed.error = "no such file";
+  const std::vector<CompareRow> rows{row(), failed};
+  const CompareOptions o{.time_limit = 10, .seeds = 3, .threads = 2};
+  const auto back = rows_from_json(nlohmann::json::parse(to_json(rows, o).dump()));
+  ASSERT_EQ(back.size(), 2u);
+  const CompareRow& r = back[0];
+  EXPECT_EQ(r.name, "t_slot");
+  EXPECT_TRUE(r.error.empty());
+  ASSERT_EQ(r.swept.size(), all_fitters().size());
+  for (std::size_t i = 0; i < r.swept.size(); ++i) {
+    EXPECT_EQ(r.swept[i].fitter, rows[0].swept[i].fitter);
+    EXPECT_EQ(r.swept[i].plan_ms, rows[0].swept[i].plan_ms);
+    EXPECT_EQ(r.swept[i].result.status, rows[0].swept[i].result.status);
+  }
+  EXPECT_EQ(r.ompl_successes(), 2);
+  EXPECT_EQ(r.ompl_colliding(), 1);
+  EXPECT_EQ(r.ompl_median(), 200.0);
+  EXPECT_EQ(r.ompl_fcl_build_ms, 3.5);
+  EXPECT_EQ(r.swept_median(), 11.5);
+  EXPECT_EQ(r.verdict(), rows[0].verdict());
+  EXPECT_EQ(back[1].error, "no such file");
+  EXPECT_EQ(back[1].verdict(), "not run");
+}
+
+TEST(PlanCompareJson, StatusWordsReadBack) {
+  for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_bounds,
+                             PlanStatus::no_path_resolution, PlanStatus::invalid_start, PlanStatus::invalid_goal,
+                             PlanStatus::invalid_bounds})
+    EXPECT_EQ(status_named(status_name(s)), s) << status_name(s);
+  EXPECT_EQ(status_named("no path (time)"), PlanStatus::no_path_time);  // bench_plan before 2026-11-24
+  EXPECT_FALSE(status_named("solved!"));
+}
+
+}  // namespace
+}  // namespace swept::bench
