@@ -313,7 +313,10 @@ def _run_serial(jobs: Sequence[Job], progress: _Progress) -> list[dict]:
 
 def _run_dask(jobs: Sequence[Job], client: Any, progress: _Progress) -> list[dict]:
     from distributed import as_completed
-    futures = client.map(run_job, list(jobs), pure=False, key=[f"swept-study-job-{j.id}" for j in jobs])
+    # By reference to the importable module (under `python3 -m swept.study` this file runs as
+    # __main__, whose functions cloudpickle would copy by value, with their module's locks).
+    import swept.study
+    futures = client.map(swept.study.run_job, list(jobs), pure=False, key=[f"swept-study-job-{j.id}" for j in jobs])
     rows = []
     try:
         for fut in as_completed(futures):
