@@ -12,7 +12,7 @@ A study file names problems and the variants to sweep; every combination is one 
 
     [[problem]]
     file = "problems/a.toml"    # relative to the study file; or `glob = "problems/*.toml"`
-    name = "a"                  # optional, default: the file's stem
+    name = "a"                  # optional, default: the path relative to the study file, no extension
 
     [variants]                  # each optional; a list of values, or one value
     fitter = ["inertia", "pqp"]
@@ -93,6 +93,12 @@ def _as_list(value: Any) -> list:
     return list(value) if isinstance(value, (list, tuple)) else [value]
 
 
+def _default_name(base: str, file: str) -> str:
+    """A problem's default name: its path relative to the study file, without the extension."""
+    rel = os.path.relpath(os.path.normpath(file), base)
+    return os.path.splitext(rel)[0].replace(os.sep, "/")
+
+
 def load_study(path: str | os.PathLike) -> Study:
     """Reads a study file and expands it into its jobs (see the module's documentation)."""
     path = os.fspath(path)
@@ -135,7 +141,7 @@ def load_study(path: str | os.PathLike) -> Study:
             raise StudyError(f"{path}: {where} needs one of 'file' or 'glob'")
         if "file" in entry:
             f = os.path.normpath(os.path.join(base, str(entry["file"])))
-            problems.append((str(entry.get("name", os.path.splitext(os.path.basename(f))[0])), f))
+            problems.append((str(entry["name"]) if "name" in entry else _default_name(base, f), f))
         else:
             matches = sorted(globmod.glob(os.path.join(base, str(entry["glob"]))))
             if not matches:
@@ -143,7 +149,7 @@ def load_study(path: str | os.PathLike) -> Study:
             if "name" in entry:
                 raise StudyError(f"{path}: {where}: 'name' goes with 'file', not 'glob'")
             for f in matches:
-                problems.append((os.path.splitext(os.path.basename(f))[0], os.path.normpath(f)))
+                problems.append((_default_name(base, f), os.path.normpath(f)))
 
     variants = doc.get("variants", {})
     if not isinstance(variants, dict):

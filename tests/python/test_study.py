@@ -51,9 +51,9 @@ def test_load_study_expands_the_jobs(tmp_path):
     s = st.load_study(write_study(str(tmp_path)))
     assert s.name == "cups" and len(s.jobs) == 18
     assert [j.id for j in s.jobs] == list(range(18))
-    assert (s.jobs[0].problem, s.jobs[0].fitter, s.jobs[0].clearance) == ("cup0", "inertia", 0.25)
-    assert (s.jobs[5].problem, s.jobs[5].fitter, s.jobs[5].clearance) == ("cup0", "pqp", 2.5)
-    assert s.jobs[6].problem == "cup1"
+    assert (s.jobs[0].problem, s.jobs[0].fitter, s.jobs[0].clearance) == ("problems/cup0", "inertia", 0.25)
+    assert (s.jobs[5].problem, s.jobs[5].fitter, s.jobs[5].clearance) == ("problems/cup0", "pqp", 2.5)
+    assert s.jobs[6].problem == "problems/cup1"
     bad = tmp_path / "bad.toml"
     bad.write_text('[[problem]]\nfile = "x.toml"\n[variants]\nclearence = [1]\n')
     with pytest.raises(swept.Error, match=r"bad.toml: unknown key 'variants.clearence'"):
@@ -135,7 +135,7 @@ def test_local_cluster_run(tmp_path):
     """No --scheduler: a local cluster of two worker processes is started and stopped."""
     study_file = write_study(str(tmp_path))
     s = st.load_study(study_file)
-    s.jobs = [j for j in s.jobs if j.problem == "cup1"]
+    s.jobs = [j for j in s.jobs if j.problem == "problems/cup1"]
     serial = st.run_study(s, serial=True, progress=False)
     st.clear_cache()
     local = st.run_study(s, workers=2, progress=False)
