@@ -182,10 +182,12 @@ def load_study(path: str | os.PathLike) -> Study:
 
 # ---- what a worker runs ---------------------------------------------------------------------------
 # Per process: problems by file, scenes (meshes + trees) by (file, fitter). A worker builds each
-# tree once and keeps it for every later job of that problem and fitter.
+# tree once and keeps it for every later job of that problem and fitter; past SCENE_CACHE_SIZE
+# scenes (environment SWEPT_STUDY_SCENES, default 32) the least recently used one is dropped.
+SCENE_CACHE_SIZE = int(os.environ.get("SWEPT_STUDY_SCENES", "32"))
 _cache_lock = threading.Lock()
 _problems: dict[tuple, swept.Problem] = {}
-_scenes: dict[tuple, swept.Scene] = {}
+_scenes: dict[tuple, swept.Scene] = {}  # in order of last use
 _scene_locks: dict[tuple, threading.Lock] = {}
 
 
@@ -197,8 +199,9 @@ def _file_key(file: str) -> tuple:
 def _cached_scene(problem: swept.Problem, key: tuple, fitter: str) -> tuple[swept.Scene, bool]:
     skey = key + (fitter,)
     with _cache_lock:
-        scene = _scenes.get(skey)
+        scene = _scenes.pop(skey, None)
         if scene is not None:
+            _scenes[skey] = scene  # most recently used last
             return scene, True
         lock = _scene_locks.setdefault(skey, threading.Lock())
     with lock:  # one build per key even with several threads per worker
@@ -209,6 +212,8 @@ def _cached_scene(problem: swept.Problem, key: tuple, fitter: str) -> tuple[swep
         scene = swept.Scene(problem, fitter=fitter)
         with _cache_lock:
             _scenes[skey] = scene
+            while len(_scenes) > max(SCENE_CACHE_SIZE, 1):
+                del _scenes[next(iter(_scenes))]
         return scene, False
 
 
@@ -442,7 +447,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     ap.add_argument("--workers", type=int, default=None,
                     help="worker processes of the local cluster (default: the number of cores)")
     ap.add_argument("-o", "--output", help="write the table to this CSV file and, beside it, the same rows as "
-                                           "JSON (.json); default: CSV on stdout")
+                                           "JSON (the name with .json); default: CSV on stdout")
     ap.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     args = ap.parse_args(argv)
     if args.workers is not None and args.workers < 1:
@@ -454,8 +459,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                          progress=not args.quiet)
         wall = time.perf_counter() - t0
         if args.output:
-            write_csv(rows, args.output)
-            write_json(rows, os.path.splitext(args.output)[0] + ".json", study)
+            stem, ext = os.path.splitext(args.output)
+            csv_path = args.output if ext.lower() != ".json" else stem + ".csv"
+            write_csv(rows, csv_path)
+            write_json(rows, stem + ".json", study)
         else:
             sys.stdout.write(csv_text(rows))
         print(f"swept.study: {_summary(rows, wall)}", file=sys.stderr)

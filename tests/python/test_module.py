@@ -348,3 +348,24 @@ def test_the_gil_is_released_during_a_batch():
     times = [start] + inside + [end]
     longest = max(b - a for a, b in zip(times, times[1:]))
     assert longest < 0.5 * (end - start), (longest, end - start)
+
+
+def test_the_stubs_name_what_the_module_has():
+    """_swept.pyi lists every public name of the extension, with every method and property."""
+    import ast
+    stub = ast.parse(open(os.path.join(os.path.dirname(swept.__file__), "_swept.pyi")).read())
+    names = {}
+    for node in stub.body:
+        if isinstance(node, ast.ClassDef):
+            names[node.name] = {n.name if isinstance(n, ast.FunctionDef) else n.target.id
+                                for n in node.body if isinstance(n, (ast.FunctionDef, ast.AnnAssign))}
+        elif isinstance(node, ast.FunctionDef):
+            names[node.name] = set()
+    module = {n for n in dir(swept._swept) if not n.startswith("__")}
+    assert set(names) | {"__version__"} >= module and set(names) <= module
+    for cls in ("Mesh", "BVH", "Problem", "Scene"):
+        members = {n for n in dir(getattr(swept, cls)) if not n.startswith("_") or n in ("__len__", "__init__")}
+        assert members - {"__init__"} <= names[cls], (cls, members - names[cls])
+        assert names[cls] - {"__init__", "__len__", "__copy__", "__deepcopy__"} <= members, cls
+    for fn in ("distance", "collide", "tolerance", "motion_clearance", "plan"):
+        assert getattr(swept, fn).__doc__
