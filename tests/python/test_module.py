@@ -136,6 +136,31 @@ def test_queries_agree_with_the_cpp_api(meshes, py_reference, tmp_path, fitter):
     np.testing.assert_array_equal(d1.triangle_b, d.triangle_b)
 
 
+def test_distance_witnesses_checked_in_numpy(meshes):
+    """Independent of the library: the closest points lie on the reported triangles (placed by the
+    poses, in NumPy), are `distance` apart, and no vertex pair of the two meshes is closer."""
+    rng = np.random.default_rng(5)
+    k = 200
+    pa, pb = random_poses(rng, k, 0.5), random_poses(rng, k, 4.0)
+    (av, af), (bv, bf) = meshes["a_arrays"], meshes["b_arrays"]
+    a, b = swept.BVH(swept.Mesh(av, af)), swept.BVH(swept.Mesh(bv, bf))
+    d = swept.distance(a, b, pa, pb)
+    ma, mb = quat_to_matrix(pa), quat_to_matrix(pb)
+    np.testing.assert_allclose(np.linalg.norm(d.point_a - d.point_b, axis=1), d.distance, rtol=1e-12, atol=1e-12)
+    for i in range(k):
+        wa = av @ ma[i, :3, :3].T + ma[i, :3, 3]
+        wb = bv @ mb[i, :3, :3].T + mb[i, :3, 3]
+        for tri, point in ((wa[af[d.triangle_a[i]]], d.point_a[i]), (wb[bf[d.triangle_b[i]]], d.point_b[i])):
+            # barycentric coordinates of the point in its triangle: inside, and on its plane
+            e1, e2, r = tri[1] - tri[0], tri[2] - tri[0], point - tri[0]
+            g = np.array([[e1 @ e1, e1 @ e2], [e1 @ e2, e2 @ e2]])
+            u, v = np.linalg.solve(g, [r @ e1, r @ e2])
+            assert u >= -1e-9 and v >= -1e-9 and u + v <= 1 + 1e-9, (i, u, v)
+            assert np.linalg.norm(tri[0] + u * e1 + v * e2 - point) < 1e-9
+        closest_vertices = np.sqrt(((wa[:, None, :] - wb[None, :, :]) ** 2).sum(-1)).min()
+        assert d.distance[i] <= closest_vertices + 1e-12
+
+
 def test_distance_closed_form_and_broadcasting():
     v, f = box((0, 0, 0), (1, 1, 1))
     a = swept.BVH(swept.Mesh(v, f))
