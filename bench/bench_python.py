@@ -124,11 +124,17 @@ def bench_study(cli: str, workers: int) -> None:
         print(f"  local Dask cluster, {workers} workers        {t_jobs:7.2f} s  jobs ({t_cluster:.2f} s with the cluster's start and stop)")
         print(f"  speed-up                              {t_serial / t_jobs:7.2f} x   ({t_serial / t_cluster:.2f} x with start and stop)"
               f"   tables equal: {same}")
-        per_worker = {}
+        per_worker: dict[str, list[float]] = {}
         for r in cluster:
-            per_worker[r["worker"]] = per_worker.get(r["worker"], 0) + r["wall_ms"] / 1e3
-        print(f"  job time per worker: {', '.join(f'{v:.1f} s' for v in per_worker.values())}; serial job time "
-              f"{sum(r['wall_ms'] for r in serial) / 1e3:.1f} s; load average before: {load:.1f}")
+            w = per_worker.setdefault(r["worker"], [0.0, 0.0])
+            w[0] += r["wall_ms"] / 1e3
+            w[1] += r["cpu_ms"] / 1e3
+        wall_s, cpu_s = sum(r["wall_ms"] for r in serial) / 1e3, sum(r["cpu_ms"] for r in serial) / 1e3
+        # The CPU share is how much of a core a job got: below 1 when other programs shared the cores.
+        print(f"  jobs' wall / CPU time: serial {wall_s:.1f} s / {cpu_s:.1f} s (CPU share {cpu_s / wall_s:.2f}); "
+              + "; ".join(f"worker {i + 1} {w:.1f} s / {c:.1f} s (share {c / w:.2f})"
+                          for i, (w, c) in enumerate(per_worker.values())))
+        print(f"  load average before: {load:.1f}")
         if not same:
             sys.exit("the cluster's table differs from the serial one")
 

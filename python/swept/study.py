@@ -57,10 +57,10 @@ COLUMNS: tuple[str, ...] = (
     "status", "solved", "message", "waypoints", "path_length", "translation_length",
     "rotation_length_rad", "min_clearance", "path_hash", "distance_queries", "nodes_checked",
     "edges_checked", "level",
-    "load_ms", "build_ms", "search_ms", "plan_ms", "wall_ms", "worker", "scene_cached",
+    "load_ms", "build_ms", "search_ms", "plan_ms", "wall_ms", "cpu_ms", "worker", "scene_cached",
 )
 #: Columns that differ between runs (timings, placement); left out of the equality of tables.
-VOLATILE_COLUMNS: tuple[str, ...] = ("load_ms", "build_ms", "search_ms", "plan_ms", "wall_ms", "worker",
+VOLATILE_COLUMNS: tuple[str, ...] = ("load_ms", "build_ms", "search_ms", "plan_ms", "wall_ms", "cpu_ms", "worker",
                                      "scene_cached")
 
 _VARIANT_KEYS = ("fitter", "clearance", "time_limit")
@@ -233,7 +233,7 @@ def run_job(job: Job) -> dict:
     """Runs one job in this process (a Dask worker, or the serial loop) and returns its row.
     Bad input (a problem file that does not load, a start in collision) is a row with status
     'error' and the message, not an exception."""
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     row: dict[str, Any] = {c: None for c in COLUMNS}
     row.update(job=job.id, problem=job.problem, file=job.file, fitter=job.fitter, clearance=job.clearance,
                time_limit=None if math.isnan(job.time_limit) else job.time_limit, threads=job.threads,
@@ -271,6 +271,7 @@ def run_job(job: Job) -> dict:
     except swept.Error as e:
         row.update(status="error", solved=False, message=str(e))
     row["wall_ms"] = (time.perf_counter() - t0) * 1e3
+    row["cpu_ms"] = (time.process_time() - c0) * 1e3  # this process's CPU time (all its threads)
     return row
 
 
@@ -322,12 +323,36 @@ def _run_serial(jobs: Sequence[Job], progress: _Progress) -> list[dict]:
     return rows
 
 
+def _home_workers(jobs: Sequence[Job], workers: Sequence[str]) -> dict[int, str]:
+    """A preferred worker per job, so that the jobs of one (problem, fitter) scene go to the same
+    worker and the scene is loaded and its trees built on fewer workers: the scenes, largest job
+    count first, each to the worker with the fewest jobs so far. Only a preference (Dask may run a
+    job elsewhere, and steals work for idle workers); none when there are fewer scenes than
+    workers."""
+    groups: dict[tuple, list[int]] = {}
+    for j in jobs:
+        groups.setdefault((j.file, j.fitter), []).append(j.id)
+    if len(workers) < 2 or len(groups) < len(workers):
+        return {}
+    load = {w: 0 for w in workers}
+    home: dict[int, str] = {}
+    for ids in sorted(groups.values(), key=lambda ids: (-len(ids), ids[0])):
+        w = min(workers, key=lambda w: (load[w], w))
+        load[w] += len(ids)
+        for i in ids:
+            home[i] = w
+    return home
+
+
 def _run_dask(jobs: Sequence[Job], client: Any, progress: _Progress) -> list[dict]:
     from distributed import as_completed
     # By reference to the importable module (under `python3 -m swept.study` this file runs as
     # __main__, whose functions cloudpickle would copy by value, with their module's locks).
     import swept.study
-    futures = client.map(swept.study.run_job, list(jobs), pure=False, key=[f"swept-study-job-{j.id}" for j in jobs])
+    home = _home_workers(jobs, sorted(client.scheduler_info().get("workers", {})))
+    futures = [client.submit(swept.study.run_job, j, pure=False, key=f"swept-study-job-{j.id}",
+                             workers=[home[j.id]] if j.id in home else None, allow_other_workers=True)
+               for j in jobs]
     rows = []
     try:
         for fut in as_completed(futures):
