@@ -140,3 +140,28 @@ def test_local_cluster_run(tmp_path):
     st.clear_cache()
     local = st.run_study(s, workers=2, progress=False)
     assert st.deterministic_rows(local) == st.deterministic_rows(serial)
+
+
+def test_command_line_serial_and_bad_input(tmp_path):
+    """`python3 -m swept.study --serial -o X.csv` writes X.csv and X.json; a bad study file is exit 1
+    with one `swept: error:` line naming the file and the key."""
+    study_file = write_study(str(tmp_path))
+    s = st.load_study(study_file)
+    out = str(tmp_path / "serial.csv")
+    run = subprocess.run([sys.executable, "-m", "swept.study", study_file, "--serial", "-q", "-o", out],
+                         capture_output=True, text=True, timeout=240)
+    assert run.returncode == 0, run.stderr
+    rows = read_csv(out)
+    assert len(rows) == len(s.jobs) == 18
+    doc = json.load(open(str(tmp_path / "serial.json")))
+    assert [r["job"] for r in doc["rows"]] == list(range(18)) and doc["name"] == "cups"
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[study]\nthreads = -1\n[[problem]]\nfile = "x.toml"\n')
+    run = subprocess.run([sys.executable, "-m", "swept.study", str(bad), "--serial"], capture_output=True, text=True,
+                         timeout=60)
+    assert run.returncode == 1
+    assert run.stderr.strip() == f"swept: error: {bad}: study.threads must be an integer >= 0 (0: all cores)"
+    missing = tmp_path / "missing.toml"
+    missing.write_text('[[problem]]\nfile = "nowhere.toml"\n')
+    rows = st.run_study(st.load_study(str(missing)), serial=True, progress=False)
+    assert rows[0]["status"] == "error" and "nowhere.toml" in rows[0]["message"]
