@@ -136,6 +136,31 @@ def test_queries_agree_with_the_cpp_api(meshes, py_reference, tmp_path, fitter):
     np.testing.assert_array_equal(d1.triangle_b, d.triangle_b)
 
 
+def test_motion_clearance_agrees_with_the_cpp_api(meshes, py_reference, tmp_path):
+    rng = np.random.default_rng(11)
+    k = 60
+    pa = random_poses(rng, k, 0.5)
+    start, end = random_poses(rng, k, 4.0), random_poses(rng, k, 4.0)
+    start[:, 0] += 3  # B starts beside A, and ends anywhere: some motions free, some not
+    margin = 0.1
+    f = tmp_path / "motions.txt"
+    with open(f, "w") as out:
+        for i in range(k):
+            out.write(" ".join(repr(float(x)) for x in np.concatenate([pa[i], start[i], end[i]])) + "\n")
+    text = subprocess.run([py_reference, "motion", meshes["a"], meshes["b"], "inertia", repr(margin), str(f)],
+                          check=True, capture_output=True, text=True).stdout
+    ref = np.array([[float(x) for x in line.split()] for line in text.splitlines()])
+    assert ref.shape == (k, 5)
+    a, b = swept.BVH(swept.Mesh.load(meshes["a"])), swept.BVH(swept.Mesh.load(meshes["b"]))
+    m = swept.motion_clearance(a, b, pa, start, end, margin=margin)
+    np.testing.assert_array_equal(m.free, ref[:, 0] == 1)
+    assert 0 < m.free.sum() < k, "the seeded motions should give both outcomes"
+    np.testing.assert_allclose(m.t_blocked, ref[:, 1], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(m.distance_at_block, ref[:, 2], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(m.min_distance, ref[:, 3], rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(m.distance_queries, ref[:, 4].astype(np.int64))
+
+
 def test_distance_witnesses_checked_in_numpy(meshes):
     """Independent of the library: the closest points lie on the reported triangles (placed by the
     poses, in NumPy), are `distance` apart, and no vertex pair of the two meshes is closer."""
