@@ -5,7 +5,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 namespace swept::py {
@@ -114,18 +116,31 @@ void write_pose7(const Pose& p, double* out) {
 
 void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t)>& body) {
   if (threads < 0) throw InputError("threads must be >= 0 (0: all cores), not " + std::to_string(threads));
-  pyb::gil_scoped_release release;
-  if (count == 0) return;
-  if (threads == 1 || count == 1) {
-    for (std::size_t k = 0; k < count; ++k) body(k);
-    return;
+  // In chunks, so that Ctrl-C (a signal Python sees between chunks) stops a long batch: the GIL
+  // is taken back for a moment after each chunk. The chunks do not change any result.
+  constexpr std::size_t kChunk = 8192;
+  std::unique_ptr<tbb::task_arena> arena;
+  if (threads != 1 && count > 1) {
+    int concurrency = threads;
+    if (concurrency <= 0) concurrency = tbb::task_arena::automatic;  // read, not bound to a reference
+    arena = std::make_unique<tbb::task_arena>(concurrency);
   }
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t k = r.begin(); k != r.end(); ++k) body(k);
-    });
-  });
+  for (std::size_t begin = 0; begin < count; begin += kChunk) {
+    const std::size_t end = std::min(count, begin + kChunk);
+    {
+      pyb::gil_scoped_release release;
+      if (!arena) {
+        for (std::size_t k = begin; k < end; ++k) body(k);
+      } else {
+        arena->execute([&] {
+          tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t k = r.begin(); k != r.end(); ++k) body(k);
+          });
+        });
+      }
+    }
+    if (end < count && PyErr_CheckSignals() != 0) throw pyb::error_already_set();
+  }
 }
 
 }  // namespace swept::py

@@ -77,7 +77,8 @@ Vec3 to_vec3(const pyb::handle& obj, const char* name);
 void write_pose7(const Pose& p, double* out);
 
 /// Runs body(k) for k in [0, count) on `threads` threads (0: all cores), the GIL released.
-/// Each k is independent; the results do not depend on the thread count.
+/// Each k is independent; the results do not depend on the thread count. Raises
+/// KeyboardInterrupt (after the current chunk of 8192) when Ctrl-C was pressed.
 void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t)>& body);
 
 /// A new C-contiguous array of the given shape.

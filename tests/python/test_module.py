@@ -5,6 +5,8 @@ from __future__ import annotations
 import json
 import os
 import subprocess
+import sys
+import textwrap
 import threading
 import time
 
@@ -419,3 +421,26 @@ def test_the_stubs_name_what_the_module_has():
         assert names[cls] - {"__init__", "__len__", "__copy__", "__deepcopy__"} <= members, cls
     for fn in ("distance", "collide", "tolerance", "motion_clearance", "plan"):
         assert getattr(swept, fn).__doc__
+
+
+def test_ctrl_c_stops_a_long_batch():
+    """SIGINT during a batch of minutes raises KeyboardInterrupt after the current chunk (in a child
+    interpreter, so that a late signal cannot reach pytest)."""
+    code = textwrap.dedent("""\
+        import os, signal, sys, threading, time
+        import numpy as np, swept
+        from conftest import sphere
+        v, f = sphere(1.0, 24, 48)
+        a = swept.BVH(swept.Mesh(v, f))
+        poses = np.zeros((2_000_000, 7)); poses[:, 6] = 1; poses[:, 0] = np.linspace(0.5, 5, len(poses))
+        threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        t0 = time.perf_counter()
+        try:
+            swept.distance(a, a, None, poses, threads=1)
+            print("finished")
+        except KeyboardInterrupt:
+            print("interrupted")
+        """)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.path.dirname(__file__), os.environ.get("PYTHONPATH", "")]))
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=240, env=env)
+    assert p.stdout.strip() == "interrupted", (p.stdout, p.stderr)
