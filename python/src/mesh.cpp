@@ -163,6 +163,48 @@ pyb::dict bvh_stats(const PyBvh& b) {
   return d;
 }
 
+// ---- pickling (for Dask and multiprocessing): the triangles travel, trees are rebuilt -------------
+pyb::tuple mesh_getstate(const PyMesh& s) {
+  return pyb::make_tuple(s.vertices, s.faces, s.data->soup.name, s.data->unit, s.data->file, s.data->warnings);
+}
+
+PyMesh mesh_setstate(const pyb::tuple& t) {
+  if (t.size() != 6) throw std::runtime_error("swept.Mesh: bad pickle state");
+  PyMesh m = mesh_from_arrays(t[0], t[1], t[2].cast<std::string>(), t[3].cast<std::string>());
+  auto data = std::const_pointer_cast<MeshData>(m.data);  // not shared yet
+  data->file = t[4].cast<std::string>();
+  data->warnings = t[5].cast<std::vector<std::string>>();
+  return m;
+}
+
+/// The tree's triangles back in input order (Bvh::triangle_ids), as an (M, 3, 3) array.
+pyb::array_t<double> input_triangles(const Bvh& b) {
+  auto a = new_array<double>({static_cast<pyb::ssize_t>(b.triangles.size()), 3, 3});
+  double* out = a.mutable_data();
+  for (std::size_t i = 0; i < b.triangles.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 3; ++d) out[9 * b.triangle_ids[i] + 3 * c + d] = b.triangles[i][c][d];
+  return a;
+}
+
+pyb::tuple bvh_getstate(const PyBvh& b) {
+  return pyb::make_tuple(input_triangles(*b.bvh), std::string(to_string(b.bvh->config.fitter)),
+                         std::string(to_string(b.bvh->config.split)), b.bvh->config.leaf_size,
+                         b.mesh ? b.mesh->file : std::string(), b.mesh ? b.mesh->unit : std::string("mm"));
+}
+
+PyBvh bvh_setstate(const pyb::tuple& t) {
+  if (t.size() != 6) throw std::runtime_error("swept.BVH: bad pickle state");
+  auto tri = t[0].cast<pyb::array_t<double, pyb::array::c_style | pyb::array::forcecast>>();
+  const auto count = tri.ndim() == 3 ? tri.shape(0) : 0;
+  auto faces = new_array<std::int64_t>({count, 3});
+  for (pyb::ssize_t i = 0; i < 3 * count; ++i) faces.mutable_data()[i] = i;
+  PyMesh mesh = mesh_from_arrays(tri.attr("reshape")(-1, 3), faces, "", t[5].cast<std::string>());
+  std::const_pointer_cast<MeshData>(mesh.data)->file = t[4].cast<std::string>();
+  // The same triangles in the same order and the same configuration: the same tree, node for node.
+  return build(pyb::cast(mesh), t[1].cast<std::string>(), t[2].cast<std::string>(), t[3].cast<int>(), true);
+}
+
 }  // namespace
 
 void bind_mesh(pyb::module_& m) {
@@ -202,6 +244,7 @@ coordinates (default: mm, or m for glTF). Raises swept.Error with the message `s
             return a;
           }, "(2, 3) array: min and max corner (inf, -inf for an empty mesh)")
       .def("__len__", [](const PyMesh& s) { return s.data->soup.triangles.size(); })
+      .def(pyb::pickle(&mesh_getstate, &mesh_setstate))
       .def("__repr__", [](const PyMesh& s) {
         std::ostringstream os;
         os << "swept.Mesh(" << s.data->soup.triangles.size() << " triangles, unit='" << s.data->unit << "'"
@@ -217,6 +260,7 @@ fitter: "pqp" | "rapid2" | "inertia" (the paper's INERTIA_FIT, default);
 split: "min-sa" (try the three axes, keep the smallest SA(left) + SA(right); default) | "largest".)doc")
       .def(pyb::init(&build), pyb::arg("mesh"), pyb::arg("fitter") = "inertia", pyb::arg("split") = "min-sa",
            pyb::arg("leaf_size") = 1, pyb::arg("parallel") = true)
+      .def(pyb::pickle(&bvh_getstate, &bvh_setstate))
       .def("stats", &bvh_stats, R"doc(
 The figures of `swept bvh --json`: triangles, fitter, split, nodes, depth, total_surface_area,
 total_volume (sums over every node's RSS), build_ms, bytes.)doc")
