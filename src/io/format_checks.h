@@ -1,0 +1,53 @@
+#pragma once
+// Internal to swept_io: our own checks of the text and binary formats assimp reads, run before
+// assimp (which parses malformed or non-finite numbers without complaint, cannot say on which
+// line they were, hangs on some truncated PLY files and reserves memory for declared counts
+// before finding the data short), and the glTF facts the assimp reader compares its result with.
+#include "import_detail.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace swept::io_detail {
+
+/// `s` in lower case (ASCII).
+std::string lower(std::string s);
+
+/// The whitespace-separated tokens of a line.
+std::vector<std::string_view> split(std::string_view line);
+/// `s` in quotes for a message, shortened when long.
+std::string quoted(std::string_view s);
+/// Parses a decimal number; "" on success, else the reason.
+std::string parse_number(std::string_view s, double& x);
+/// Parses an integer; false if it is not one.
+bool parse_int(std::string_view s, long long& v);
+
+/// PLY: the header, then every element's data, walked without interpreting it (assimp's PLY
+/// reader can loop forever on a truncated ASCII body and reads past a truncated binary one).
+/// "" when fine, else the reason with its line or element.
+std::string check_ply(const std::string& bytes);
+
+/// OBJ, OFF, PLY and COLLADA counts checked line by line, glTF's external references confined to
+/// the model's folder, and STL read by swept's reader (assimp takes a truncated binary STL
+/// silently; it reads STL only for ompl_app_center()). nullopt when fine or not ours to check.
+std::optional<Error> precheck(const ReadContext& ctx);
+
+/// IGES's record structure: 80-column records, sections in order, the Terminate record's line
+/// counts, directory entries pointing into the parameter section (OpenCASCADE's IGES reader can
+/// crash on truncated files). "" when fine, else the reason with its line.
+std::string check_iges(const std::string& bytes);
+
+/// glTF 2: the faces each primitive declares (its index count, or its vertex count without
+/// indices, by its mode), one entry per primitive in file order, as assimp's importer makes one
+/// mesh per primitive. Empty when the file is not glTF 2 JSON we can read (assimp then reports).
+struct GltfPrimitive {
+  std::string mesh;
+  std::size_t faces = 0;
+  std::size_t vertices = 0;
+};
+std::vector<GltfPrimitive> gltf_declared_faces(const std::string& bytes, bool binary);
+
+}  // namespace swept::io_detail

@@ -1,0 +1,145 @@
+// OMPL.app's .cfg problems, read as OMPL.app reads them.
+#include "problem_detail.h"
+
+#include "swept/io/mesh_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+namespace swept::problem_detail {
+
+namespace fs = std::filesystem;
+
+// OMPL.app's .cfg: an INI file with a [problem] section (robot, world, start.*, goal.*,
+// volume.*); angles in radians about an axis. OMPL.app reads it with boost::program_options,
+// which rejects a key given twice and ignores keys it does not know; so do we.
+Result<Problem> load_cfg(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return Error{file.string() + ": cannot open"};
+  const std::string name = file.string();
+  auto at = [&](int line) { return name + ":" + std::to_string(line) + ": "; };
+  std::map<std::string, std::pair<std::string, int>> kv;  // key → (value, line)
+  std::string line, section;
+  int lineno = 0;
+  auto trim = [](std::string s) {
+    const auto b = s.find_first_not_of(" \t\r"), e = s.find_last_not_of(" \t\r");
+    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+  };
+  while (std::getline(in, line)) {
+    ++lineno;
+    auto hash = line.find_first_of("#;");
+    if (hash != std::string::npos) line.erase(hash);
+    line = trim(line);
+    if (line.empty()) continue;
+    if (line.front() == '[') {
+      if (line.back() != ']') return Error{at(lineno) + "malformed section header"};
+      section = trim(line.substr(1, line.size() - 2));
+      continue;
+    }
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) return Error{at(lineno) + "expected 'key = value', got '" + line + "'"};
+    if (section != "problem") continue;
+    const std::string key = trim(line.substr(0, eq));
+    const auto [it, fresh] = kv.try_emplace(key, trim(line.substr(eq + 1)), lineno);
+    if (!fresh)
+      return Error{at(lineno) + key + ": given twice (first on line " + std::to_string(it->second.second) + ")"};
+  }
+  if (kv.empty()) return Error{name + ": no [problem] section with keys (robot, world, start.*, goal.*)"};
+  std::string error;
+  // Reads a number; absent and not required: keeps `out`, returns false.
+  auto num = [&](const std::string& key, double& out, bool required) {
+    auto it = kv.find(key);
+    if (it == kv.end()) {
+      if (required && error.empty()) error = name + ": " + key + ": missing";
+      return false;
+    }
+    const std::string& text = it->second.first;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0') {
+      if (error.empty()) error = at(it->second.second) + key + ": not a number: '" + text + "'";
+      return false;
+    }
+    if (!std::isfinite(v)) {
+      if (error.empty()) error = at(it->second.second) + key + ": must be a finite number, got '" + text + "'";
+      return false;
+    }
+    out = v;
+    return true;
+  };
+  auto pose = [&](const std::string& prefix) {
+    Vec3 t = Vec3::Zero(), axis = Vec3::Zero();
+    double theta = 0.0;
+    num(prefix + ".x", t.x(), true);
+    num(prefix + ".y", t.y(), true);
+    num(prefix + ".z", t.z(), true);
+    num(prefix + ".theta", theta, false);
+    bool has_axis = false;
+    for (int i = 0; i < 3; ++i)
+      has_axis = num(prefix + ".axis." + "xyz"[i], axis[i], false) || has_axis;
+    // OMPL's setAxisAngle() turns an axis shorter than 1e-9 into the identity whatever the
+    // angle; a non-zero angle about no axis is a mistake in the file, not a rotation.
+    if (!error.empty() || theta == 0.0) return Pose::from_translation(t);
+    const double big = axis.cwiseAbs().maxCoeff();
+    const auto unit = unit_axis(axis);
+    if (!unit || big * (axis / big).norm() < 1e-9) {
+      const int where = kv.at(prefix + ".theta").second;
+      error = at(where) + prefix + ".theta: a rotation of " + format_number(theta) + " rad needs a non-zero " +
+              prefix + ".axis.x/y/z" +
+              (has_axis ? " (the axis given is shorter than 1e-9)" : " (none given)");
+      return Pose::from_translation(t);
+    }
+    return Pose{Eigen::AngleAxisd(theta, *unit).toRotationMatrix(), t};
+  };
+  Problem p;
+  p.source = file;
+  p.unit = "mm";
+  for (const char* key : {"robot", "world"}) {
+    auto it = kv.find(key);
+    if (it == kv.end()) return Error{name + ": " + key + ": missing (" + key + " = MESH)"};
+    if (it->second.first.empty()) return Error{at(it->second.second) + key + ": no mesh file given"};
+    MeshRef m;
+    m.file = resolve(file, it->second.first);
+    std::error_code ec;
+    if (!fs::is_regular_file(m.file, ec))
+      return Error{at(it->second.second) + key + ": " + (fs::exists(m.file, ec) ? "not a file: " : "no such file: ") +
+                   m.file.string()};
+    m.file_unit = "mm";  // OMPL.app is unit-less: keep the numbers as they are
+    m.deflection = p.deflection;
+    if (std::string(key) == "robot") {
+      // OMPL.app's robot frame: the mesh moved so that the mean of its vertices, as OMPL.app's
+      // assimp post-processing joins them, is at the origin (ompl_app_center()).
+      auto center = ompl_app_center(m.file, {.unit = p.unit, .file_unit = m.file_unit, .linear_deflection = m.deflection});
+      if (!center) return Error{at(it->second.second) + key + ": " + center.error().message};
+      m.pose = Pose::from_translation(-*center);
+    }
+    (std::string(key) == "robot" ? p.body : p.obstacles).push_back(m);
+  }
+  p.start = pose("start");
+  p.goal = pose("goal");
+  p.reference_point = Vec3::Zero();  // the robot's frame origin: its vertex mean
+  bool any = false;
+  for (const char* axis : {"x", "y", "z"})
+    any = any || kv.count(std::string("volume.min.") + axis) || kv.count(std::string("volume.max.") + axis);
+  if (any) {
+    Aabb box;
+    for (int i = 0; i < 3; ++i) {
+      num(std::string("volume.min.") + "xyz"[i], box.min[i], true);
+      num(std::string("volume.max.") + "xyz"[i], box.max[i], true);
+    }
+    p.bounds = box;
+  }
+  if (!error.empty()) return Error{error};
+  if (p.bounds && (p.bounds->min.array() >= p.bounds->max.array()).any())
+    return Error{name + ": volume.min must be below volume.max on every axis"};
+  return p;
+}
+
+}  // namespace swept::problem_detail
