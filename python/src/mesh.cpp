@@ -126,8 +126,8 @@ PyBvh build(const pyb::object& mesh_obj, const std::string& fitter, const std::s
             bool parallel) {
   const PyMesh& mesh = mesh_obj.cast<const PyMesh&>();
   BuildConfig config;
-  if (!parse_fitter(fitter, config.fitter)) throw InputError("unknown fitter '" + fitter + "' (pqp, rapid2, inertia)");
-  if (!parse_split_rule(split, config.split)) throw InputError("unknown split rule '" + split + "' (min-sa, largest)");
+  if (!parse_fitter(fitter, config.fitter)) throw InputError("unknown fitter '" + fitter + "' (" + fitter_names() + ")");
+  if (!parse_split_rule(split, config.split)) throw InputError("unknown split rule '" + split + "' (" + split_rule_names() + ")");
   if (leaf_size < 1) throw InputError("leaf_size must be >= 1, not " + std::to_string(leaf_size));
   config.leaf_size = leaf_size;
   config.parallel = parallel;

@@ -66,18 +66,19 @@ PyProblem problem_load(const std::filesystem::path& path) {
 
 Fitter fitter_from(const std::string& text) {
   Fitter f;
-  if (!parse_fitter(text, f)) throw InputError("unknown fitter '" + text + "' (pqp, rapid2, inertia)");
+  if (!parse_fitter(text, f)) throw InputError("unknown fitter '" + text + "' (" + fitter_names() + ")");
   return f;
 }
 
 PyScene scene_load(const PyProblem& p, std::optional<std::string> fitter) {
-  const Fitter f = fitter ? fitter_from(*fitter) : p.problem.fitter;
+  BuildConfig config = p.problem.build;  // the problem's split rule and leaf size
+  if (fitter) config.fitter = fitter_from(*fitter);
   Result<PlanScene> s = Error{};
   {
     pyb::gil_scoped_release release;
-    s = load_scene(p.problem, f);
+    s = load_scene(p.problem, config);
   }
-  return PyScene{std::make_shared<const PlanScene>(value_or_raise(std::move(s))), p.problem.source, f};
+  return PyScene{std::make_shared<const PlanScene>(value_or_raise(std::move(s))), p.problem.source, config.fitter};
 }
 
 PyBvh scene_tree(const PyScene& s, const Bvh& t) {
@@ -195,8 +196,8 @@ prints (naming the file, the line and the key) on bad input.)doc")
                       if (!(v >= 0) || !std::isfinite(v)) throw InputError("contact_tolerance must be a finite number >= 0, not " + std::to_string(v));
                       p.problem.contact_tolerance = v;
                     })
-      .def_property("fitter", [](const PyProblem& p) { return std::string(to_string(p.problem.fitter)); },
-                    [](PyProblem& p, const std::string& v) { p.problem.fitter = fitter_from(v); })
+      .def_property("fitter", [](const PyProblem& p) { return std::string(to_string(p.problem.build.fitter)); },
+                    [](PyProblem& p, const std::string& v) { p.problem.build.fitter = fitter_from(v); })
       .def_property("time_limit", [](const PyProblem& p) { return p.problem.time_limit; },
                     [](PyProblem& p, double v) {
                       if (!(v > 0) || !std::isfinite(v)) throw InputError("time_limit must be a positive number of seconds, not " + std::to_string(v));
@@ -209,7 +210,7 @@ prints (naming the file, the line and the key) on bad input.)doc")
                     })
       .def("__repr__", [](const PyProblem& p) {
         return "swept.Problem('" + p.problem.source.string() + "', clearance=" + std::to_string(p.problem.clearance) +
-               ", fitter='" + std::string(to_string(p.problem.fitter)) + "')";
+               ", fitter='" + std::string(to_string(p.problem.build.fitter)) + "')";
       });
 
   pyb::class_<PyScene>(m, "Scene", R"doc(

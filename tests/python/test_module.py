@@ -87,7 +87,7 @@ def test_bvh_stats_equal_the_command_line(meshes, swept_cli):
     out = subprocess.run([swept_cli, "bvh", meshes["a"], "--fitter", "all", "--split", "all", "--json"],
                          check=True, capture_output=True, text=True).stdout
     rows = json.loads(out)["meshes"][0]["fitters"]
-    assert len(rows) == 6
+    assert len(rows) >= 6 and len(rows) % 3 == 0  # every fitter x every split rule
     for row in rows:
         st = swept.BVH(m, fitter=row["fitter"], split=row["split"]).stats()
         assert st["triangles"] == len(m)
