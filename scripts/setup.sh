@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages swept needs (as root via apt-get; otherwise prints the command),
-# the viewer's npm packages, and configures + builds the release preset.
+# the viewer's npm packages, and configures + builds the release preset; then installs the Python
+# module for /usr/bin/python3 (as root; otherwise prints the PYTHONPATH line to use).
 #   bash scripts/setup.sh            # packages + release build
 #   SWEPT_SKIP_BUILD=1 bash scripts/setup.sh   # packages only
 set -euo pipefail
@@ -14,6 +15,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libfcl-dev libompl-dev zlib1g-dev
   chromium
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-tqdm
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -40,4 +42,14 @@ fi
 if [ -z "${SWEPT_SKIP_BUILD:-}" ]; then
   cmake --preset release >/dev/null
   cmake --build --preset release -j"$(nproc)"
+  # The Python module (docs/python.md), built for Debian's /usr/bin/python3: as root it is
+  # installed into /usr/local/lib/python3.X/dist-packages, on that interpreter's path.
+  if compgen -G "build/release/python/swept/_swept*.so" >/dev/null; then
+    if [ "$(id -u)" = 0 ]; then
+      cmake --install build/release --component python >/dev/null
+      echo "setup: Python module installed:  /usr/bin/python3 -c 'import swept'"
+    else
+      echo "setup: for the Python module:  export PYTHONPATH=$PWD/build/release/python"
+    fi
+  fi
 fi

@@ -12,4 +12,11 @@ cmake --build "$tmp/consumer" >/dev/null
 "$tmp/consumer/consumer"
 PKG_CONFIG_PATH="$tmp/prefix/lib/pkgconfig" pkg-config --cflags --libs swept | grep -q -- "-lswept_query"
 test -x "$tmp/prefix/bin/swept"
+# The Python module, when it was built, imports from the prefix's site directory.
+for site in "$tmp"/prefix/lib/python3*/dist-packages; do
+  [ -d "$site/swept" ] || continue
+  python=$(grep -m1 '^SWEPT_PYTHON_EXECUTABLE:' "$build/CMakeCache.txt" | cut -d= -f2-)
+  (cd "$tmp" && PYTHONPATH="$site" "${python:-/usr/bin/python3}" -c "import swept, swept.study; assert swept.__file__.startswith('$site')")
+  echo "install: the Python module imports from $site"
+done
 echo "install: find_package(swept), pkg-config and the swept binary work"

@@ -1,0 +1,176 @@
+"""swept: exact distance and collision queries between rigid triangle meshes (RSS trees), and the
+certified, deterministic 6-DOF disassembly planner, from Python with NumPy arrays.
+
+    import numpy as np, swept
+    a = swept.Mesh.load("frame.stl")
+    b = swept.Mesh.load("part.step", deflection=0.05)
+    ta, tb = swept.BVH(a), swept.BVH(b, fitter="inertia")
+    poses = np.zeros((1000, 7)); poses[:, 6] = 1; poses[:, 2] = np.linspace(10, 100, 1000)
+    r = swept.distance(ta, tb, None, poses)         # r.distance (1000,), r.point_a (1000, 3), ...
+    res = swept.plan(swept.Problem.load("problem.toml"), time_limit=30)
+    res.path                                        # (P, 7): x, y, z, qx, qy, qz, qw
+
+Poses are arrays of shape (7,) or (K, 7) -- translation then quaternion (x, y, z, qx, qy, qz, qw),
+scalar last as in OMPL's .path files, not necessarily normalised -- or (4, 4) / (K, 4, 4)
+homogeneous matrices; None is the identity. A single pose is used for every K.
+
+Bad input raises swept.Error (a ValueError) with the message the command line prints. The
+queries release the GIL and spread a batch over threads (`threads=0`: all cores). See
+docs/python.md.
+"""
+from __future__ import annotations
+
+from typing import Any, NamedTuple, Optional
+
+import numpy as np
+
+from ._swept import BVH, Error, Mesh, Problem, Scene, __version__
+from . import _swept
+
+for _cls in (BVH, Error, Mesh, Problem, Scene):
+    _cls.__module__ = "swept"  # swept.Error in tracebacks, not swept._swept.Error
+del _cls
+
+__all__ = [
+    "BVH", "Error", "Mesh", "Problem", "Scene", "PlanResult",
+    "DistanceResult", "CollideResult", "ToleranceResult", "MotionResult",
+    "distance", "collide", "tolerance", "motion_clearance", "plan", "__version__",
+]
+
+
+class DistanceResult(NamedTuple):
+    """Per pose k: the exact distance between the meshes, the closest points (world frame), the
+    input indices of the two closest triangles, and the work done."""
+    distance: np.ndarray        #: (K,) float64
+    point_a: np.ndarray         #: (K, 3) float64, on A, world frame
+    point_b: np.ndarray         #: (K, 3) float64, on B, world frame
+    triangle_a: np.ndarray      #: (K,) int64, index into A's faces
+    triangle_b: np.ndarray      #: (K,) int64
+    exact: np.ndarray           #: (K,) bool (False only with rel_err/abs_err early exits)
+    bv_tests: np.ndarray        #: (K,) uint64 RSS-pair tests
+    triangle_tests: np.ndarray  #: (K,) uint64 triangle-pair tests
+
+
+class CollideResult(NamedTuple):
+    """Per pose k: whether the meshes intersect, the first intersecting triangle pair (-1 when
+    none), and with all_contacts=True a list of (n_k, 2) arrays of every intersecting pair."""
+    colliding: np.ndarray       #: (K,) bool
+    triangle_a: np.ndarray      #: (K,) int64, -1 when not colliding
+    triangle_b: np.ndarray      #: (K,) int64
+    bv_tests: np.ndarray
+    triangle_tests: np.ndarray
+    contacts: Optional[list]    #: all_contacts: K arrays (n_k, 2) int64, sorted; else None
+
+
+class ToleranceResult(NamedTuple):
+    """Per pose k: whether the distance is below the tolerance and, when it is, a witness pair
+    (distance, points, triangles; -1 and inf otherwise)."""
+    within: np.ndarray          #: (K,) bool
+    distance: np.ndarray        #: (K,) float64, the witness pair's distance when within, else inf
+    point_a: np.ndarray         #: (K, 3)
+    point_b: np.ndarray         #: (K, 3)
+    triangle_a: np.ndarray      #: (K,) int64, -1 when not within
+    triangle_b: np.ndarray      #: (K,) int64
+    bv_tests: np.ndarray
+    triangle_tests: np.ndarray
+
+
+class MotionResult(NamedTuple):
+    """Per motion k (B from poses_from[k] to poses_to[k], A at poses_a[k]): certified free with
+    distance >= margin along the whole continuous motion, or where it was blocked."""
+    free: np.ndarray                #: (K,) bool, certified
+    t_blocked: np.ndarray           #: (K,) float64, motion parameter where blocked (-1 when free)
+    distance_at_block: np.ndarray   #: (K,) float64
+    min_distance: np.ndarray        #: (K,) float64, smallest distance bound seen
+    distance_queries: np.ndarray    #: (K,) int64
+    reference: np.ndarray           #: (3,) the body-frame point the motion interpolates about
+    radius: float                   #: B's radius about the reference
+
+
+class PlanResult(NamedTuple):
+    """What swept.plan() found: the fields of `swept plan --json`, and the path as an array."""
+    status: str                 #: solved | no_path_time | no_path_bounds | no_path_resolution
+    solved: bool
+    message: str
+    path: np.ndarray            #: (P, 7) x, y, z, qx, qy, qz, qw of the body frame, start ... goal
+    path_length: float          #: sum of ||delta c|| + r_max * theta
+    translation_length: float
+    rotation_length_rad: float
+    min_clearance: Optional[float]  #: None when not solved
+    escape: Optional[dict]      #: after a start in contact: segments, exempt_pairs, min_clearance_other_pairs
+    time_ms: dict               #: build, search, smooth, total
+    queries: dict               #: distance, tolerance, collide
+    path_hash: str              #: 16 hex digits, as `swept plan` prints
+    unit: str
+    fitter: str
+    level: int
+    nodes_checked: int
+    edges_checked: int
+    reference_point: np.ndarray  #: (3,) body frame
+
+    @property
+    def waypoints(self) -> int:
+        return int(self.path.shape[0])
+
+
+def _check_tree(t: Any, name: str) -> None:
+    if not isinstance(t, BVH):
+        raise TypeError(f"{name}: a swept.BVH is needed, not {type(t).__name__}")
+
+
+def distance(a: BVH, b: BVH, poses_a: Any = None, poses_b: Any = None, *, rel_err: float = 0.0,
+             abs_err: float = 0.0, threads: int = 0) -> DistanceResult:
+    """Exact distance between mesh A at poses_a[k] and mesh B at poses_b[k], for every k.
+
+    poses_a, poses_b: None (identity), one pose (7,) / (4, 4), or K poses (K, 7) / (K, 4, 4);
+    a single pose is used for every k. rel_err / abs_err: stop once the answer is provably within
+    this relative / absolute error (PQP semantics; 0: exact). threads: 0 all cores, 1 serial; the
+    results do not depend on it. The GIL is released while the batch runs."""
+    _check_tree(a, "a"), _check_tree(b, "b")
+    return DistanceResult(**_swept._distance(a, b, poses_a, poses_b, rel_err, abs_err, threads))
+
+
+def collide(a: BVH, b: BVH, poses_a: Any = None, poses_b: Any = None, *, all_contacts: bool = False,
+            threads: int = 0) -> CollideResult:
+    """Do mesh A at poses_a[k] and mesh B at poses_b[k] intersect (any triangle pair)?
+    all_contacts=True also lists every intersecting triangle pair per pose."""
+    _check_tree(a, "a"), _check_tree(b, "b")
+    return CollideResult(**_swept._collide(a, b, poses_a, poses_b, all_contacts, threads))
+
+
+def tolerance(a: BVH, b: BVH, poses_a: Any = None, poses_b: Any = None, tolerance: float = 0.0, *,
+              threads: int = 0) -> ToleranceResult:
+    """Is the distance between A at poses_a[k] and B at poses_b[k] below `tolerance`?"""
+    _check_tree(a, "a"), _check_tree(b, "b")
+    return ToleranceResult(**_swept._tolerance(a, b, poses_a, poses_b, tolerance, threads))
+
+
+def motion_clearance(a: BVH, b: BVH, poses_a: Any, poses_from: Any, poses_to: Any, *, margin: float = 0.0,
+                     reference: Any = None, radius: Optional[float] = None, max_queries: int = 100000,
+                     threads: int = 0) -> MotionResult:
+    """Certified motion clearance (Schwarzer, Saha, Latombe 2005): does B, moving from
+    poses_from[k] to poses_to[k] (reference point linear, rotation slerped about it), keep a
+    distance >= margin from A at poses_a[k] along the whole continuous motion? Never says free
+    when it is not. reference: B's body-frame point (3,) the motion interpolates about (default:
+    the centre of B's bounding box, as the planner); radius: B's radius about it (default:
+    computed; a smaller one is refused)."""
+    _check_tree(a, "a"), _check_tree(b, "b")
+    return MotionResult(**_swept._motion_clearance(a, b, poses_a, poses_from, poses_to, margin, reference, radius,
+                                                   max_queries, threads))
+
+
+def plan(problem: Problem, time_limit: Optional[float] = None, threads: Optional[int] = None, *,
+         scene: Optional[Scene] = None) -> PlanResult:
+    """Plans a certified path for the problem's body, as `swept plan` does.
+
+    time_limit, threads: override the problem's (seconds; 0 threads: all cores; the path is the
+    same at any count while the time limit is not reached). scene: a swept.Scene loaded for this
+    problem file (reused: no mesh loading or tree building); default: loaded here with the
+    problem's fitter. Not finding a path is a result (solved False, status and message saying
+    which limit); bad input (start or goal outside the bounds or in collision, bad bounds)
+    raises swept.Error with `swept plan`'s message. The GIL is released while planning."""
+    if not isinstance(problem, Problem):
+        raise TypeError(f"problem: a swept.Problem is needed, not {type(problem).__name__}")
+    if scene is not None and not isinstance(scene, Scene):
+        raise TypeError(f"scene: a swept.Scene is needed, not {type(scene).__name__}")
+    return PlanResult(**_swept._plan(problem, time_limit, threads, scene))
