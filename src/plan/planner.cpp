@@ -262,7 +262,7 @@ bool Planner::find_escape(Pose& escape) {
       const Pose q = with_ref(start_.rotation, ref(start_) + s * u);
       const NodeInfo n = check_node(q, s);
       if (!n.valid) continue;
-      if (check_.certify(start_, -1, q, -1, /*relaxed=*/true)) {
+      if (check_.clear(start_, -1, q, -1, /*relaxed=*/true)) {
         best = s;
         escape = q;
       }
@@ -278,7 +278,7 @@ bool Planner::straight_line_phase(std::vector<Pose>& out) {
     for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
       if (out_of_time()) return false;
       ++edges_checked_;
-      if (!check_.certify(poses[i], i == 0 ? start_distance_ : -1, poses[i + 1], -1)) return false;
+      if (!check_.clear(poses[i], i == 0 ? start_distance_ : -1, poses[i + 1], -1)) return false;
     }
     out = std::move(poses);
     return true;
@@ -337,7 +337,7 @@ void Planner::report_progress(int level) {
   const double now = elapsed_s();
   if (now - last_progress_ < 1.0) return;
   last_progress_ = now;
-  opt_.progress({level, nodes_.size(), check_.distance_queries.load(), now});
+  opt_.progress({level, nodes_.size(), check_.distance_queries(), now});
 }
 
 // Lazy weighted A* (Cohen, Phillips, Likhachev 2014) on the grid of one level: an entry is a
@@ -401,7 +401,7 @@ bool Planner::search_level(int level, std::size_t budget, std::vector<Key>& path
         const double da = nodes_.at(e.parent).distance;
         const double db = node ? node->distance : -1.0;
         ++edges_checked_;
-        ed = edges_.emplace(ek, check_.certify(a, da, b, db)).first;
+        ed = edges_.emplace(ek, check_.clear(a, da, b, db)).first;
       }
       if (!ed->second) continue;
     }
@@ -484,7 +484,7 @@ void Planner::smooth(std::vector<Pose>& path, std::size_t fixed) {
       while (lo < hi) {
         const std::size_t mid = (lo + hi + 1) / 2;
         ++edges_checked_;
-        if (check_.certify(path[i], -1, path[mid], -1)) lo = mid;
+        if (check_.clear(path[i], -1, path[mid], -1)) lo = mid;
         else hi = mid - 1;
       }
       out.push_back(path[lo]);
@@ -516,7 +516,7 @@ PlanResult Planner::run() {
     r.message = std::move(msg);
     r.nodes_checked = nodes_.size();
     r.edges_checked = edges_checked_;
-    r.queries.distance = check_.distance_queries.load();
+    r.queries.distance = check_.distance_queries();
     r.time_ms.total = elapsed_s() * 1e3;
     if (r.time_ms.search == 0.0) r.time_ms.search = r.time_ms.total;
     return r;
@@ -578,7 +578,7 @@ PlanResult Planner::run() {
                           .pairs);
     Pose escape;
     if (!find_escape(escape)) {
-      return fail(out_of_time() && check_.cap_refusals.load() == 0 ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
+      return fail(out_of_time() && check_.cap_refusals() == 0 ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
                   "the body starts in contact and no straight escape (along the world axes, the body's axes "
                   "or toward the goal) reaches a pose with the full clearance");
     }
@@ -622,10 +622,10 @@ PlanResult Planner::run() {
   if (!found) {
     if (out_of_time()) why = PlanStatus::no_path_time;
     std::ostringstream os;
-    if (const std::uint64_t refused = check_.cap_refusals.load(); refused > 0) {
+    if (const std::uint64_t refused = check_.cap_refusals(); refused > 0) {
       // The limiting factor was the resolution of the certificate, whatever the clock says.
       os << "no path found: " << refused << " motion" << (refused == 1 ? " grazes" : "s graze")
-         << " the clearance too closely to certify (more than " << Checker::kMaxQueriesPerEdge
+         << " the clearance too closely to certify (more than " << kMaxCertificateQueries
          << " distance queries each; a smaller clearance or a wider passage helps)";
       if (why == PlanStatus::no_path_time) os << ", and the search then reached the time limit of " << time_limit_ << " s";
       return fail(PlanStatus::no_path_resolution, os.str());
@@ -672,7 +672,7 @@ PlanResult Planner::run() {
   r.min_clearance = min_d;
   r.path_hash = path_hash(r.path);
   r.edges_checked = edges_checked_;
-  r.queries.distance = check_.distance_queries.load() + final_check.distance_queries;
+  r.queries.distance = check_.distance_queries() + final_check.distance_queries;
   r.time_ms.total = elapsed_s() * 1e3;
   std::ostringstream os;
   os << "solved" << (r.level < 0 ? " by straight moves" : " on the grid at level " + std::to_string(r.level)) << ": "
