@@ -90,9 +90,16 @@ struct Case {
   std::string kind;                             ///< "box" or "cad"
 };
 
+/// The problem's tree settings with another fitter.
+BuildConfig build_config(const Problem& problem, Fitter fitter) {
+  BuildConfig config = problem.build;
+  config.fitter = fitter;
+  return config;
+}
+
 Result<PlanScene> scene_for(const Case& c, Fitter fitter) {
-  if (c.obstacles) return make_scene(*c.obstacles, *c.body, fitter, c.problem.reference_point);
-  return load_scene(c.problem, fitter);
+  if (c.obstacles) return make_scene(*c.obstacles, *c.body, build_config(c.problem, fitter), c.problem.reference_point);
+  return load_scene(c.problem, build_config(c.problem, fitter));
 }
 
 // ---- swept ------------------------------------------------------------------------------------
@@ -462,9 +469,9 @@ Row run_case(const Case& c, double limit, int seeds, int threads, bool collide_o
   row.kind = c.kind;
   row.clearance = c.problem.clearance;
   row.rotation = c.problem.rotation == RotationMode::none ? "none" : c.problem.rotation == RotationMode::free ? "free" : "limits";
-  std::vector<Fitter> fitters{c.problem.fitter, c.problem.fitter};
+  std::vector<Fitter> fitters{c.problem.build.fitter, c.problem.build.fitter};
   for (Fitter f : {Fitter::pqp, Fitter::rapid2, Fitter::inertia})
-    if (f != c.problem.fitter) fitters.push_back(f);
+    if (f != c.problem.build.fitter) fitters.push_back(f);
   std::optional<PlanScene> main_scene;
   for (std::size_t i = 0; i < fitters.size(); ++i) {
     if (i == 1 && main_scene) {  // the determinism check reuses the scene
@@ -490,7 +497,7 @@ Row run_case(const Case& c, double limit, int seeds, int threads, bool collide_o
   row.main_ms = {row.swept[0].plan_ms, row.swept[1].plan_ms};
   // (A run that ends on the time limit is not repeated: its median is the limit anyway.)
   for (int k = 2; first.status != PlanStatus::no_path_time && k < seeds; ++k) {
-    const SweptRun again = run_swept(c, *main_scene, c.problem.fitter, limit, threads);
+    const SweptRun again = run_swept(c, *main_scene, c.problem.build.fitter, limit, threads);
     row.main_ms.push_back(again.plan_ms);
     row.deterministic = row.deterministic && same(again.result);
   }

@@ -165,7 +165,8 @@ Result<bool> write_problem_files(const GeneratedProblem& g, const std::string& d
     out << "]\n";
   }
   out << "\n[planner]\nclearance = " << p.clearance << "\ncontact_tolerance = " << p.contact_tolerance
-      << "\nfitter = \"" << to_string(p.fitter) << "\"\ntime_limit = " << p.time_limit << "\n";
+      << "\nfitter = \"" << to_string(p.build.fitter) << "\"\nsplit = \"" << to_string(p.build.split)
+      << "\"\nleaf_size = " << p.build.leaf_size << "\ntime_limit = " << p.time_limit << "\n";
   return write_file_atomically(fs::path(dir) / "problem.toml", out.str());
 }
 

@@ -275,7 +275,7 @@ void run_scene(const PaperOptions& o, const scenes::SceneInfo& info, const fs::p
   auto problem = load_problem(problem_file);
   if (!problem) throw std::runtime_error(problem.error().message);
   const auto t0 = Clock::now();
-  auto loaded = load_scene(*problem, Fitter::inertia);
+  auto loaded = load_scene(*problem, BuildConfig{});
   if (!loaded) throw std::runtime_error(problem_file.string() + ": " + loaded.error().message);
   PlanScene scene = std::move(loaded).value();
   sr.load_ms = ms_since(t0);

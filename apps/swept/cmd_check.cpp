@@ -79,7 +79,7 @@ void run(const CheckCliOptions& o) {
   auto path = read_path(o.path);
   if (!path) throw std::runtime_error(path.error().message);
   if (path->poses.empty()) throw std::runtime_error(o.path + ": the path has no poses");
-  auto scene = load_scene(*problem, problem->fitter);
+  auto scene = load_scene(*problem, problem->build);
   if (!scene) throw std::runtime_error(scene.error().message);
   PathCheckOptions options;
   if (o.clearance >= 0) options.clearance = o.clearance;

@@ -35,12 +35,12 @@ std::string hex(std::uint64_t h) {
 void run(const PlanCliOptions& o) {
   auto problem = load_problem(o.problem);
   if (!problem) throw std::runtime_error(problem.error().message);
-  if (!o.fitter.empty() && !parse_fitter(o.fitter, problem->fitter))
-    throw std::runtime_error("unknown fitter '" + o.fitter + "' (pqp, rapid2, inertia)");
+  if (!o.fitter.empty() && !parse_fitter(o.fitter, problem->build.fitter))
+    throw std::runtime_error("unknown fitter '" + o.fitter + "' (" + fitter_names() + ")");
   if (o.time_limit > 0) problem->time_limit = o.time_limit;
   if (o.threads >= 0) problem->threads = o.threads;
 
-  auto scene = load_scene(*problem, problem->fitter);
+  auto scene = load_scene(*problem, problem->build);
   if (!scene) throw std::runtime_error(scene.error().message);
 
   PlanOptions options;
@@ -85,14 +85,17 @@ void run(const PlanCliOptions& o) {
         {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}}},
         {"path_hash", hex(r.path_hash)},
         {"unit", problem->unit},
-        {"fitter", std::string(to_string(problem->fitter))},
+        {"fitter", std::string(to_string(problem->build.fitter))},
+        {"split", std::string(to_string(problem->build.split))},
+        {"leaf_size", problem->build.leaf_size},
         {"nodes_checked", r.nodes_checked},
         {"edges_checked", r.edges_checked}};
     std::cout << doc.dump(2) << "\n";
   } else {
     std::cout << "problem      " << o.problem << "\n"
               << "meshes       obstacles " << scene->obstacles.triangles.size() << " triangles, body "
-              << scene->body.triangles.size() << " triangles (fitter " << to_string(problem->fitter) << ")\n"
+              << scene->body.triangles.size() << " triangles (fitter " << to_string(problem->build.fitter) << ", split "
+              << to_string(problem->build.split) << ", leaf size " << problem->build.leaf_size << ")\n"
               << "result       " << r.message << "\n";
     if (r.solved()) {
       std::cout << std::setprecision(6) << "path         " << r.path.poses.size() << " waypoints, length "
@@ -129,7 +132,7 @@ void add_plan_command(CLI::App& app) {
       "the whole continuous motion. Exit 0: solved; 2: no path within the limits (the message says\n"
       "which: time, bounds or resolution); 1: bad input.");
   cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
-  cmd->add_option("--fitter", o->fitter, "Override the fitter: pqp | rapid2 | inertia");
+  cmd->add_option("--fitter", o->fitter, "Override the fitter: " + fitter_names(" | "));
   cmd->add_option("--time-limit", o->time_limit, "Override the time limit, seconds")->check(CLI::PositiveNumber);
   cmd->add_option("--threads", o->threads, "Override the thread count (0: all cores); the same path at any count (tested: 1, 2, 4, 8)")
       ->check(CLI::NonNegativeNumber);

@@ -282,7 +282,7 @@ void write_view(const Problem& problem, const PlanScene& scene, const Path& path
 void run(const ViewOptions& o) {
   auto problem = load_problem(o.problem);
   if (!problem) throw std::runtime_error(problem.error().message);
-  auto scene = load_scene(*problem, problem->fitter);
+  auto scene = load_scene(*problem, problem->build);
   if (!scene) throw std::runtime_error(scene.error().message);
   auto path = read_path(o.path);
   if (!path) throw std::runtime_error(path.error().message);

@@ -81,6 +81,8 @@ struct Scratch {
   std::vector<std::uint32_t> outside;  // projected vertices that may sit at an RSS corner
   std::vector<std::uint32_t> ids[2];
   std::vector<std::uint8_t> side[3];
+  std::vector<Vec3> child_projected;        // min-sa's candidate children
+  std::vector<std::uint32_t> child_outside;
   struct StackItem {
     Pending p;
     int depth;
@@ -150,6 +152,48 @@ struct Builder {
     return result;
   }
 
+  // The RSS that process() gives a node of these triangles (the one-triangle closed form, else
+  // the node's own fit orients it): min-sa's cost of a candidate child, exactly as the child
+  // would be built.
+  Rss subset_rss(const std::uint32_t* subset, std::size_t n, Scratch& s) const {
+    const Vec3 origin = info[subset[0]].t.p;
+    Mat3 axes;
+    if (n == 1 && detail::single_triangle_axes(info[subset[0]].t, axes)) {
+      detail::project_vertices(info.data(), subset, n, axes, origin, s.child_projected);
+      return detail::make_rss(detail::rss_extents(s.child_projected.data(), s.child_projected.size()), axes, origin);
+    }
+    axes = detail::fit_ids(info.data(), subset, n, config.fitter).axes;
+    Vec3 lo, hi;
+    detail::project_vertices(info.data(), subset, n, axes, origin, s.child_projected, &lo, &hi);
+    detail::RssEdges edges(lo, hi);
+    s.child_outside.clear();
+    for (std::size_t k = 0; k < s.child_projected.size(); ++k)
+      if (edges.add(s.child_projected[k])) s.child_outside.push_back(static_cast<std::uint32_t>(k));
+    return detail::make_rss(edges.finish(s.child_projected.data(), s.child_outside.data(), s.child_outside.size()),
+                            axes, origin);
+  }
+
+  // SA(L) + SA(R) of candidate `a`: min-sa fits each side as its own node (the paper's eq. (4)
+  // with each child's RSS, SPEC §2.2); min-sa-box takes the RSS around each side's bounding box
+  // in the node's frame, from the one pass (cheaper, not the paper's rule).
+  double split_cost(const std::uint32_t* node_ids, std::size_t n, const std::vector<std::uint8_t>& side,
+                    const Vec3 lo[2], const Vec3 hi[2], Scratch& s) const {
+    double cost = 0.0;
+    if (config.split == SplitRule::min_sa) {
+      s.ids[0].clear();
+      s.ids[1].clear();
+      for (std::size_t j = 0; j < n; ++j) s.ids[side[j]].push_back(node_ids[j]);
+      for (int k = 0; k < 2; ++k) cost += surface_area(subset_rss(s.ids[k].data(), s.ids[k].size(), s));
+      return cost;
+    }
+    for (int k = 0; k < 2; ++k) {
+      const Vec3 ext = hi[k] - lo[k];
+      const double w = ext.x(), h = ext.y(), r = 0.5 * ext.z();
+      cost += 2.0 * w * h + 2.0 * std::numbers::pi * (w + h) * r + 4.0 * std::numbers::pi * r * r;
+    }
+    return cost;
+  }
+
   // Fits the node's RSS (in the local frame) into `rss` and decides its split.
   Outcome process(const Pending& node, Rss& rss, Scratch& s) {
     Outcome out;
@@ -170,14 +214,13 @@ struct Builder {
     detail::RssEdges edges(box_lo, box_hi);
     s.outside.clear();
 
-    // Candidate planes through the split position, across e1, e2, e3 (min-sa) or e1 only
-    // (largest). The cost of a candidate is SA(L) + SA(R), where each subset's RSS is the one
-    // enclosing the subset's bounding box in the node's frame (rectangle: the box's e1 × e2
-    // extent; radius: half its e3 extent). All candidates are measured in the same pass over the
-    // projections as the edges of the node's own RSS.
+    // Candidate planes through the split position, across e1, e2, e3 (min-sa, min-sa-box) or e1
+    // only (largest), each costed by split_cost(). The sides, and min-sa-box's boxes (rectangle:
+    // a side's e1 × e2 extent in the node's frame; radius: half its e3 extent), come from the
+    // same pass over the projections as the edges of the node's own RSS.
     const bool leaf = n <= static_cast<std::size_t>(config.leaf_size);
     const Vec3 split = f.axes.transpose() * (f.split_point - origin);
-    const int candidates = leaf ? 0 : config.split == SplitRule::min_sa ? 3 : 1;
+    const int candidates = leaf ? 0 : config.split == SplitRule::largest ? 1 : 3;
     constexpr double inf = std::numeric_limits<double>::infinity();
     Vec3 lo[3][2], hi[3][2];
     std::size_t left[3] = {0, 0, 0};
@@ -213,12 +256,8 @@ struct Builder {
     int best = -1;
     for (int a = 0; a < candidates; ++a) {
       if (left[a] == 0 || left[a] == n) continue;  // leaves one side empty: not a candidate
-      double cost = 0.0;
-      for (int k = 0; k < 2; ++k) {
-        const Vec3 ext = hi[a][k] - lo[a][k];
-        const double w = ext.x(), h = ext.y(), r = 0.5 * ext.z();
-        cost += 2.0 * w * h + 2.0 * std::numbers::pi * (w + h) * r + 4.0 * std::numbers::pi * r * r;
-      }
+      // With one candidate (largest) there is nothing to compare.
+      const double cost = candidates == 1 ? 0.0 : split_cost(node_ids, n, s.side[a], lo[a], hi[a], s);
       if (cost < best_cost) {  // ties keep the earlier axis
         best_cost = cost;
         best = a;
@@ -250,8 +289,9 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   if (triangles.empty()) return Error{"cannot build a tree of an empty mesh (0 triangles)"};
   if (triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 2))
     return Error{"mesh too large: " + std::to_string(triangles.size()) + " triangles"};
-  if (config.leaf_size < 1)
-    return Error{"leaf size must be at least 1 (got " + std::to_string(config.leaf_size) + ")"};
+  if (config.leaf_size < 1 || config.leaf_size > kMaxLeafSize)
+    return Error{"leaf size must be between 1 and " + std::to_string(kMaxLeafSize) + " (got " +
+                 std::to_string(config.leaf_size) + ")"};
   Aabb box;
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const Triangle& t = triangles[i];

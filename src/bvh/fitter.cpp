@@ -123,28 +123,14 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
     s.hi = s.hi.cwiseMax(t.t.p).cwiseMax(t.t.q).cwiseMax(t.t.r);
   }
   const double eps = epsilon_for_extent((s.hi - s.lo).norm());
-  Fitter used = fitter;
-  if (fitter != Fitter::pqp && !(s.sum_a >= eps && s.sum_a > 0.0)) {
-    used = Fitter::pqp;
+  FitterRecipe used = swept::info(fitter).recipe;
+  if (used.area_weighted && !(s.sum_a >= eps && s.sum_a > 0.0)) {
+    used = swept::info(Fitter::pqp).recipe;
     out.fell_back = true;
   }
-  Vec3 c;
-  double k_center, k_scatter, scale;
-  switch (used) {
-    case Fitter::pqp:
-      c = s.sum_m / static_cast<double>(n);
-      k_center = 3.0, k_scatter = 1.0, scale = 1.0 / (3.0 * static_cast<double>(n));
-      break;
-    case Fitter::rapid2:
-      c = s.sum_am / s.sum_a;
-      k_center = 1.0, k_scatter = 1.0 / 12.0, scale = 1.0;
-      break;
-    case Fitter::inertia:
-    default:
-      c = s.sum_am / s.sum_a;
-      k_center = 3.0, k_scatter = 1.0, scale = 1.0 / (3.0 * static_cast<double>(n));
-      break;
-  }
+  const Vec3 c = used.area_weighted ? Vec3(s.sum_am / s.sum_a) : Vec3(s.sum_m / static_cast<double>(n));
+  const double k_center = used.k_center, k_scatter = used.k_scatter;
+  double scale = used.per_vertex ? 1.0 / (3.0 * static_cast<double>(n)) : 1.0;
 
   // Pass 2: the matrix, six unique entries. INERTIA_FIT's weights A_i / A_min share the factor
   // 1 / A_min, applied once at the end, so A_min is found in the same pass: the smallest area
@@ -155,7 +141,7 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
     if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
     const TriInfo& t = info[ids[j]];
     double w = 1.0;
-    if (used != Fitter::pqp) {
+    if (used.area_weighted) {
       w = t.area;
       if (t.area >= eps && t.area < a_min) a_min = t.area;
     }
@@ -170,7 +156,7 @@ Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter
     acc[4] += wc * d.y() * d.z() + ws * (a.y() * a.z() + b.y() * b.z() + e.y() * e.z());
     acc[5] += wc * d.z() * d.z() + ws * (a.z() * a.z() + b.z() * b.z() + e.z() * e.z());
   }
-  if (used == Fitter::inertia) {
+  if (used.by_min_area) {
     if (!std::isfinite(a_min)) a_min = s.max_a;  // every triangle below ε, but their sum is not
     scale /= a_min;
   }

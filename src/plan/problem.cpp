@@ -218,19 +218,27 @@ Result<Problem> load_toml(const fs::path& file) {
     const toml::table* pl = r.table(n, "planner", "a table [planner]");
     int max_triangles = static_cast<int>(std::min<std::size_t>(p.max_triangles, std::numeric_limits<int>::max()));
     if (!pl ||
-        !r.keys(*pl, "planner.", {"clearance", "contact_tolerance", "fitter", "time_limit", "deflection", "threads", "max_triangles"}) ||
+        !r.keys(*pl, "planner.", {"clearance", "contact_tolerance", "fitter", "split", "leaf_size", "time_limit", "deflection", "threads", "max_triangles"}) ||
         !r.number(pl->get("clearance"), "planner.clearance", p.clearance, 0.0) ||
         !r.number(pl->get("contact_tolerance"), "planner.contact_tolerance", p.contact_tolerance, 0.0) ||
         !r.number(pl->get("time_limit"), "planner.time_limit", p.time_limit, 0.0, true) ||
         !r.number(pl->get("deflection"), "planner.deflection", p.deflection, 0.0, true) ||
         !r.integer(pl->get("threads"), "planner.threads", p.threads, 0, std::numeric_limits<int>::max()) ||
-        !r.integer(pl->get("max_triangles"), "planner.max_triangles", max_triangles, 1, std::numeric_limits<int>::max()))
+        !r.integer(pl->get("max_triangles"), "planner.max_triangles", max_triangles, 1, std::numeric_limits<int>::max()) ||
+        !r.integer(pl->get("leaf_size"), "planner.leaf_size", p.build.leaf_size, 1, kMaxLeafSize))
       return failed();
     p.max_triangles = static_cast<std::size_t>(max_triangles);
     if (const toml::node* f = pl->get("fitter")) {
       std::string fitter;
       if (!r.string(f, "planner.fitter", fitter)) return failed();
-      if (!parse_fitter(fitter, p.fitter)) return r.err(*f, "planner.fitter", "unknown fitter '" + fitter + "' (pqp, rapid2, inertia)");
+      if (!parse_fitter(fitter, p.build.fitter))
+        return r.err(*f, "planner.fitter", "unknown fitter '" + fitter + "' (" + fitter_names() + ")");
+    }
+    if (const toml::node* f = pl->get("split")) {
+      std::string split;
+      if (!r.string(f, "planner.split", split)) return failed();
+      if (!parse_split_rule(split, p.build.split))
+        return r.err(*f, "planner.split", "unknown split rule '" + split + "' (" + split_rule_names() + ")");
     }
   }
 

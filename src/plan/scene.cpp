@@ -11,7 +11,7 @@
 
 namespace swept {
 
-Result<PlanScene> load_scene(const Problem& problem, Fitter fitter) {
+Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) {
   using Clock = std::chrono::steady_clock;
   PlanScene scene;
   const auto t0 = Clock::now();
@@ -36,22 +36,22 @@ Result<PlanScene> load_scene(const Problem& problem, Fitter fitter) {
   if (auto e = gather(problem.obstacles, scene.obstacles)) return *e;
   if (auto e = gather(problem.body, scene.body)) return *e;
   const auto t1 = Clock::now();
-  auto made = make_scene(std::move(scene.obstacles), std::move(scene.body), fitter, problem.reference_point);
+  auto made = make_scene(std::move(scene.obstacles), std::move(scene.body), config, problem.reference_point);
   if (!made) return made.error();
   made->load_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   return made;
 }
 
-Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, Fitter fitter,
+Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, const BuildConfig& config,
                              std::optional<Vec3> reference_point) {
   using Clock = std::chrono::steady_clock;
   PlanScene scene;
   scene.obstacles = std::move(obstacles);
   scene.body = std::move(body);
   const auto t1 = Clock::now();
-  auto ob = build_bvh(scene.obstacles.triangles, {.fitter = fitter});
+  auto ob = build_bvh(scene.obstacles.triangles, config);
   if (!ob) return Error{"obstacles: " + ob.error().message};
-  auto bb = build_bvh(scene.body.triangles, {.fitter = fitter});
+  auto bb = build_bvh(scene.body.triangles, config);
   if (!bb) return Error{"body: " + bb.error().message};
   const auto t2 = Clock::now();
   scene.obstacle_tree = std::move(*ob);

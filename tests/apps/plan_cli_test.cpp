@@ -45,7 +45,7 @@ test::PlannerFigures figures_of(const nlohmann::json& doc) {
 void check_written_path(const std::string& problem_file, const fs::path& path_file, const test::PlannerFigures& f = {}) {
   auto problem = load_problem(problem_file);
   ASSERT_TRUE(problem) << problem.error().message;
-  auto scene = load_scene(*problem, problem->fitter);
+  auto scene = load_scene(*problem, problem->build);
   ASSERT_TRUE(scene) << scene.error().message;
   auto path = read_path(path_file);
   ASSERT_TRUE(path) << path.error().message;

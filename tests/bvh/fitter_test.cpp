@@ -247,5 +247,37 @@ TEST(Fitter, OneTriangleLeafAxesMatchTheFitters) {
   }
 }
 
+// The fitter table is the one place a fitter is named: every row parses back to itself, names
+// are unique, and the paper's three are there in the paper's order (PQP_FIT, the baseline, first).
+TEST(FitterTable, NamesRoundTripAndAreUnique) {
+  const auto fitters = all_fitters();
+  ASSERT_EQ(fitters.size(), 3u);
+  EXPECT_EQ(fitters[0].paper_name, "PQP_FIT");
+  EXPECT_EQ(fitters[1].paper_name, "RAPID2_FIT");
+  EXPECT_EQ(fitters[2].paper_name, "INERTIA_FIT");
+  for (std::size_t i = 0; i < fitters.size(); ++i) {
+    Fitter parsed = fitters[(i + 1) % fitters.size()].fitter;
+    ASSERT_TRUE(parse_fitter(fitters[i].name, parsed)) << fitters[i].name;
+    EXPECT_EQ(parsed, fitters[i].fitter);
+    EXPECT_EQ(to_string(fitters[i].fitter), fitters[i].name);
+    EXPECT_EQ(&info(fitters[i].fitter), &fitters[i]);
+    for (std::size_t j = 0; j < i; ++j) {
+      EXPECT_NE(fitters[i].name, fitters[j].name);
+      EXPECT_NE(fitters[i].fitter, fitters[j].fitter);
+    }
+  }
+  EXPECT_EQ(fitter_names(), "pqp, rapid2, inertia");
+  EXPECT_EQ(split_rule_names(" | "), "min-sa | largest | min-sa-box");
+  Fitter f = Fitter::inertia;
+  EXPECT_FALSE(parse_fitter("PQP_FIT", f));
+  EXPECT_FALSE(parse_fitter("", f));
+  EXPECT_EQ(f, Fitter::inertia);
+  for (const SplitRuleInfo& row : all_split_rules()) {
+    SplitRule s = row.rule == SplitRule::min_sa ? SplitRule::largest : SplitRule::min_sa;
+    ASSERT_TRUE(parse_split_rule(row.name, s));
+    EXPECT_EQ(s, row.rule);
+  }
+}
+
 }  // namespace
 }  // namespace swept

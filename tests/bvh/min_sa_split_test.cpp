@@ -1,13 +1,14 @@
-// The min-sa split rule (docs/fitters.md "Split rules") checked node by node against an
-// independent enumeration of its candidates.
+// The min-sa split rules (docs/fitters.md "Split rules") checked node by node against an
+// independent enumeration of their candidates.
 //
-// What the builder evaluates (src/bvh/build.cpp, Builder::process): the node's own fit gives the
-// split position s and axes e1, e2, e3; candidate k puts a triangle on the right when its
-// centroid c satisfies (c − s)·e_k ≥ 0, and is skipped when a side is empty. The cost of a
-// candidate is SA(L) + SA(R), where each side's RSS is the one enclosing that side's vertex
-// bounding box *in the node's frame* (rectangle: the box's e1 × e2 extent; radius: half its e3
-// extent), not the side's own fitted RSS. The kept candidate is the cheapest (ties: the earlier
-// axis).
+// The rule (SPEC §2.2, the paper's eq. (4)): the node's own fit gives the split position s and
+// axes e1, e2, e3; candidate k puts a triangle on the right when its centroid c satisfies
+// (c − s)·e_k ≥ 0, and is skipped when a side is empty. The cost of a candidate is
+// SA(L) + SA(R). For `min-sa` (the paper's) each side's RSS is the one that side gets as a child:
+// fitted with its own fitter axes (`fit_rss(side, fit(side).axes)` here, the public functions,
+// not the builder's). For `min-sa-box` (the cheaper evaluation) it is the RSS enclosing the
+// side's vertex bounding box *in the node's frame* (rectangle: the box's e1 × e2 extent; radius:
+// half its e3 extent). The kept candidate is the cheapest (ties: the earlier axis).
 //
 // Surface area of an RSS with rectangle half lengths a, b and radius r (derived here rather than
 // taken from swept/geometry/rss.h): the RSS is the parallel body at distance r of a flat
@@ -20,8 +21,8 @@
 // flat convex set, S(K) = 2·area and M(K) = (π/2)·perimeter (R. Schneider, "Convex Bodies: The
 // Brunn–Minkowski Theory", 2nd ed., 2014, §4.2; the RSS itself: Larsen et al. 1999).
 //
-// The test also prints, without asserting it, how often the paper's definition (each side fitted
-// with its own fitter and axes) would have chosen another candidate.
+// The tests also print, without asserting it, how often the other rule would have chosen another
+// candidate.
 #include "support/test_support.h"
 #include "swept/bvh/bvh.h"
 #include "swept/bvh/fitter.h"
@@ -66,6 +67,7 @@ struct Candidate {
   std::size_t left_count = 0;
   double box_cost = 0.0;    ///< docs/fitters.md: SA of the sides' node-frame box RSSs
   double own_cost = 0.0;    ///< the paper's: SA of each side's RSS fitted with its own axes
+  bool own_determined = true;  ///< each side's axes are determined (no nearly repeated eigenvalues)
   bool valid = false;       ///< both sides non-empty
 };
 
@@ -104,27 +106,36 @@ std::vector<Candidate> enumerate(std::span<const Triangle> tris, Fitter fitter) 
     for (int s = 0; s < 2; ++s) {
       const Vec3 ext = hi[s] - lo[s];
       c.box_cost += rss_area(0.5 * ext.x(), 0.5 * ext.y(), 0.5 * ext.z());
-      const Rss own = fit_rss(side[s], fit(side[s], fitter).axes);
+      const Fit side_fit = fit(side[s], fitter);
+      const Vec3 ev = side_fit.eigenvalues;
+      if (side[s].size() > 1 && !(ev[0] > 0 && ev[0] - ev[1] >= 1e-6 * ev[0] && ev[1] - ev[2] >= 1e-6 * ev[0]))
+        c.own_determined = false;  // e.g. a side symmetric about an axis: its RSS's frame is arbitrary
+      const Rss own = fit_rss(side[s], side_fit.axes);
       c.own_cost += rss_area(own.half_length[0], own.half_length[1], own.radius);
     }
   }
   return out;
 }
 
-/// What the paper's definition (each side fitted with its own fitter and axes) would change.
+/// What the other rule (min-sa-box for a min-sa tree, min-sa for a min-sa-box tree) would change.
 struct PaperComparison {
   int nodes = 0;           ///< nodes compared
-  int differs = 0;         ///< nodes where the paper's cheapest candidate is another one
-  double worst_excess = 0; ///< largest own_cost(builder's) / min own_cost − 1
+  int differs = 0;         ///< nodes where the other rule's cheapest candidate is another one
+  int near_misses = 0;     ///< nodes whose kept candidate is not the cheapest by this test's costs
+  double worst_excess = 0; ///< largest other cost(builder's choice) / min other cost − 1
   std::string worst_where;
 };
 
+double cost(const Candidate& c, SplitRule rule) { return rule == SplitRule::min_sa ? c.own_cost : c.box_cost; }
+SplitRule other(SplitRule rule) { return rule == SplitRule::min_sa ? SplitRule::min_sa_box : SplitRule::min_sa; }
+
 /// Checks the split of internal node `i`: the builder's two children are exactly one valid
 /// candidate (up to triangles whose centroid lies within rounding of its plane), and that
-/// candidate has the smallest box cost. Returns false when the node is not checkable (nearly
-/// repeated eigenvalues, so the axes are not determined; or the median fallback).
+/// candidate has the smallest cost under the tree's rule. Returns false when the node is not
+/// checkable (nearly repeated eigenvalues, so the axes are not determined; or the median fallback).
 bool check_node(const Bvh& bvh, const std::vector<std::pair<int, int>>& range, std::size_t i, Fitter fitter,
                 const std::string& what, PaperComparison& paper) {
+  const SplitRule rule = bvh.config.split;
   const Node& node = bvh.nodes[i];
   if (node.is_leaf()) return false;
   const auto [begin, end] = range[i];
@@ -137,10 +148,12 @@ bool check_node(const Bvh& bvh, const std::vector<std::pair<int, int>>& range, s
   double best = std::numeric_limits<double>::infinity(), best_own = best;
   for (const Candidate& c : cands)
     if (c.valid) {
-      best = std::min(best, c.box_cost);
-      best_own = std::min(best_own, c.own_cost);
+      best = std::min(best, cost(c, rule));
+      best_own = std::min(best_own, cost(c, other(rule)));
     }
   if (!std::isfinite(best)) return false;  // every candidate leaves a side empty: the median fallback
+  for (const Candidate& c : cands)
+    if (c.valid && !c.own_determined) return false;  // min-sa's costs are not determined here
 
   // Which candidate did the builder take? Its left child holds triangles [begin, middle).
   int chosen = -1;
@@ -158,14 +171,20 @@ bool check_node(const Bvh& bvh, const std::vector<std::pair<int, int>>& range, s
                        << " triangles): the children are none of the min-sa candidates";
   if (chosen < 0) return true;
   const Candidate& c = cands[static_cast<std::size_t>(chosen)];
-  EXPECT_LE(c.box_cost, best * (1.0 + 1e-9))
-      << what << " node " << i << ": kept the candidate across e" << chosen + 1 << " with SA(L)+SA(R) " << c.box_cost
-      << ", the cheapest costs " << best;
+  // min-sa's costs go through each side's RSS fit, whose rectangle is found greedily: a change of
+  // the axes in the last bits can move a side's SA by a few per cent (docs/fitters.md). So a
+  // min-sa node may keep a candidate that the enumeration here finds up to 5 % dearer, and the
+  // callers bound how often (`near_misses`); min-sa-box's costs are exact.
+  const double slack = rule == SplitRule::min_sa ? 0.05 : 1e-9;
+  if (cost(c, rule) > best * (1.0 + 1e-9)) ++paper.near_misses;
+  EXPECT_LE(cost(c, rule), best * (1.0 + slack))
+      << what << " node " << i << ": kept the candidate across e" << chosen + 1 << " with SA(L)+SA(R) "
+      << cost(c, rule) << ", the cheapest costs " << best;
 
   ++paper.nodes;
-  if (c.own_cost > best_own * (1.0 + 1e-9)) {
+  if (cost(c, other(rule)) > best_own * (1.0 + 1e-9)) {
     ++paper.differs;
-    const double excess = c.own_cost / best_own - 1.0;
+    const double excess = cost(c, other(rule)) / best_own - 1.0;
     if (excess > paper.worst_excess) {
       paper.worst_excess = excess;
       paper.worst_where = what + " node " + std::to_string(i) + " (" + std::to_string(end - begin) + " triangles)";
@@ -193,10 +212,12 @@ int check_tree(const Bvh& bvh, Fitter fitter, int max_depth, const std::string& 
   return checked;
 }
 
-void report(const PaperComparison& paper, const std::string& what) {
-  std::printf("[ min-sa ] %s: under the paper's definition (each side fitted with its own axes) another candidate "
-              "is cheaper on %d of %d nodes; worst: the builder's choice costs %.2f %% more (%s)\n",
-              what.c_str(), paper.differs, paper.nodes, 100.0 * paper.worst_excess, paper.worst_where.c_str());
+void report(const PaperComparison& paper, SplitRule rule, const std::string& what) {
+  std::printf("[ %s ] %s: %d of %d nodes kept a candidate this test finds dearer; under %s another candidate is "
+              "cheaper on %d nodes; worst: the builder's choice costs %.2f %% more there (%s)\n",
+              std::string(to_string(rule)).c_str(), what.c_str(), paper.near_misses, paper.nodes,
+              std::string(to_string(other(rule))).c_str(), paper.differs, 100.0 * paper.worst_excess,
+              paper.worst_where.c_str());
 }
 
 TEST(MinSaSplit, RssAreaFormulaMatchesTheLibrary) {
@@ -214,9 +235,13 @@ TEST(MinSaSplit, RssAreaFormulaMatchesTheLibrary) {
   EXPECT_NEAR(rss_area(1, 0, 1), 8 * std::numbers::pi, 1e-14);
 }
 
-TEST(MinSaSplit, EveryCheckedNodeKeepsTheCheapestCandidateOnSeededSets) {
+class MinSaRules : public ::testing::TestWithParam<SplitRule> {};
+
+TEST_P(MinSaRules, EveryCheckedNodeKeepsTheCheapestCandidateOnSeededSets) {
+  const SplitRule rule = GetParam();
   test::Rng rng(2024);
-  for (Fitter fitter : {Fitter::pqp, Fitter::rapid2, Fitter::inertia}) {
+  for (const FitterInfo& row : all_fitters()) {
+    const Fitter fitter = row.fitter;
     PaperComparison paper;
     int checked = 0, roots = 0;
     for (int trial = 0; trial < 12; ++trial) {
@@ -230,7 +255,7 @@ TEST(MinSaSplit, EveryCheckedNodeKeepsTheCheapestCandidateOnSeededSets) {
         for (Triangle& t : tris)
           for (int v = 0; v < 3; ++v) t[v].x() *= 5.0;
       tris = test::transformed(tris, Pose{rng.rotation(), rng.vec(-50, 50)});
-      auto bvh = build_bvh(tris, {.fitter = fitter, .split = SplitRule::min_sa});
+      auto bvh = build_bvh(tris, {.fitter = fitter, .split = rule});
       ASSERT_TRUE(bvh);
       const std::string what = std::string(to_string(fitter)) + " trial " + std::to_string(trial);
       const auto range = ranges(*bvh);
@@ -239,7 +264,8 @@ TEST(MinSaSplit, EveryCheckedNodeKeepsTheCheapestCandidateOnSeededSets) {
     }
     EXPECT_GE(roots, 10) << to_string(fitter) << ": too few roots had well-separated eigenvalues to be checked";
     EXPECT_GE(checked, 100) << to_string(fitter);
-    report(paper, std::string(to_string(fitter)) + " on seeded sets");
+    report(paper, rule, std::string(to_string(fitter)) + " on seeded sets");
+    EXPECT_LE(paper.near_misses, paper.nodes / 50) << to_string(fitter) << ": more than 2 % of the nodes kept a dearer candidate";
   }
 }
 
@@ -264,7 +290,8 @@ TEST(MinSaSplit, TheRuleCanChooseEveryAxis) {
   EXPECT_GT(chosen[1] + chosen[2], 0);
 }
 
-TEST(MinSaSplit, KeepsTheCheapestCandidateOnARealMesh) {
+TEST_P(MinSaRules, KeepsTheCheapestCandidateOnARealMesh) {
+  const SplitRule rule = GetParam();
   const auto data = test::shared_data();
   if (!data) GTEST_SKIP() << "../shared/data is absent: min-sa not checked on a real mesh";
   const auto file = *data / "ros_industrial/kuka_kr10r1420_visual_base_link.stl";
@@ -275,7 +302,7 @@ TEST(MinSaSplit, KeepsTheCheapestCandidateOnARealMesh) {
   ASSERT_TRUE(model) << model.error().message;
   const auto tris = model->merged().triangles;
   for (Fitter fitter : {Fitter::pqp, Fitter::inertia}) {
-    auto bvh = build_bvh(tris, {.fitter = fitter, .split = SplitRule::min_sa});
+    auto bvh = build_bvh(tris, {.fitter = fitter, .split = rule});
     ASSERT_TRUE(bvh);
     PaperComparison paper;
     const std::string what = std::string("kuka base link, ") + std::string(to_string(fitter));
@@ -283,9 +310,13 @@ TEST(MinSaSplit, KeepsTheCheapestCandidateOnARealMesh) {
     EXPECT_TRUE(check_node(*bvh, range, 0, fitter, what, paper)) << "the root was not checkable";
     const int checked = check_tree(*bvh, fitter, 8, what, paper);
     EXPECT_GE(checked, 100) << what;
-    report(paper, what + " (root and 7 levels below)");
+    report(paper, rule, what + " (root and 7 levels below)");
+    EXPECT_LE(paper.near_misses, paper.nodes / 50) << what << ": more than 2 % of the nodes kept a dearer candidate";
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Rules, MinSaRules, ::testing::Values(SplitRule::min_sa, SplitRule::min_sa_box),
+                         [](const auto& info) { return info.param == SplitRule::min_sa ? "min_sa" : "min_sa_box"; });
 
 }  // namespace
 }  // namespace swept

@@ -21,7 +21,7 @@ namespace swept::test {
 using scenes::GeneratedProblem;
 
 inline PlanScene scene_of(const GeneratedProblem& g, Fitter fitter = Fitter::inertia) {
-  auto s = make_scene(g.obstacles, g.body, fitter, g.problem.reference_point);
+  auto s = make_scene(g.obstacles, g.body, {.fitter = fitter}, g.problem.reference_point);
   EXPECT_TRUE(s) << s.error().message;
   return std::move(*s);
 }

@@ -66,10 +66,12 @@ TEST_F(ProblemFiles, TomlRoundTrip) {
   EXPECT_DOUBLE_EQ(p->goal_margin, 1.0);
   EXPECT_EQ(p->rotation, RotationMode::limits);
   EXPECT_NEAR(p->rotation_limits[2][1], 3.14159265358979, 1e-12);
-  EXPECT_EQ(p->fitter, Fitter::pqp);
+  EXPECT_EQ(p->build.fitter, Fitter::pqp);
+  EXPECT_EQ(p->build.split, SplitRule::min_sa);  // the defaults where the file is silent
+  EXPECT_EQ(p->build.leaf_size, 1);
   EXPECT_DOUBLE_EQ(p->clearance, 0.002);
   EXPECT_DOUBLE_EQ(p->start.translation.z(), -7.49);
-  auto s = load_scene(*p, p->fitter);
+  auto s = load_scene(*p, p->build);
   ASSERT_TRUE(s) << s.error().message;
   EXPECT_EQ(s->body.triangles.size(), 12u);
   const PlanResult r = plan(*p, *s);
@@ -84,6 +86,24 @@ TEST_F(ProblemFiles, TomlRoundTrip) {
       EXPECT_LT((back->poses[i].translation - r.path.poses[i].translation).norm(), 1e-12);
       EXPECT_LT(rotation_angle(back->poses[i].rotation, r.path.poses[i].rotation), 1e-7);
     }
+  }
+}
+
+TEST_F(ProblemFiles, TreeSettingsReachTheScene) {
+  std::string text = kGood;
+  text.replace(text.find("fitter = \"pqp\""), 14, "fitter = \"rapid2\"\nsplit = \"largest\"\nleaf_size = 4");
+  auto p = load_problem(write("tree.toml", text));
+  ASSERT_TRUE(p) << p.error().message;
+  auto s = load_scene(*p, p->build);
+  ASSERT_TRUE(s) << s.error().message;
+  for (const Bvh* tree : {&s->obstacle_tree, &s->body_tree}) {
+    EXPECT_EQ(tree->config.fitter, Fitter::rapid2);
+    EXPECT_EQ(tree->config.split, SplitRule::largest);
+    EXPECT_EQ(tree->config.leaf_size, 4);
+    std::size_t largest_leaf = 0;
+    for (const Node& n : tree->nodes) largest_leaf = std::max<std::size_t>(largest_leaf, n.is_leaf() ? n.count : 0);
+    EXPECT_GT(largest_leaf, 1u);  // 12 triangles with leaves of up to 4: some leaf holds more than one
+    EXPECT_LE(largest_leaf, 4u);
   }
 }
 
@@ -119,7 +139,7 @@ volume.max.z = 60
   ASSERT_TRUE(p->bounds);
   EXPECT_DOUBLE_EQ(p->bounds->max.z(), 60);
   p->clearance = 0.002;
-  auto s = load_scene(*p, p->fitter);
+  auto s = load_scene(*p, p->build);
   ASSERT_TRUE(s) << s.error().message;
   // The robot mesh is centred as OMPL.app centres it: on the mean of its joined vertices, for a
   // box (the peg) 4 per face, 24 in all, whose mean is the box's centre.
@@ -160,7 +180,7 @@ TEST_F(ProblemFiles, BadFilesGiveClearErrors) {
   collide.replace(collide.find("-7.49"), 5, "-30.0");
   auto p = load_problem(write("col.toml", collide));
   ASSERT_TRUE(p);
-  auto s = load_scene(*p, p->fitter);
+  auto s = load_scene(*p, p->build);
   ASSERT_TRUE(s);
   EXPECT_EQ(plan(*p, *s).status, PlanStatus::invalid_start);
 }
@@ -225,7 +245,11 @@ TEST_F(ProblemFiles, WrongTypesAndRangesAreErrorsNamingTheKeyAndLine) {
   };
   const Case cases[] = {
       {"fitter = \"pqp\"", "fitter = 5", "planner.fitter: must be a string"},
-      {"fitter = \"pqp\"", "fitter = \"best\"", "planner.fitter: unknown fitter 'best'"},
+      {"fitter = \"pqp\"", "fitter = \"best\"", "planner.fitter: unknown fitter 'best' (pqp, rapid2, inertia)"},
+      {"[planner]", "split = \"median\"", "planner.split: unknown split rule 'median' (min-sa, largest, min-sa-box)"},
+      {"[planner]", "split = 2", "planner.split: must be a string"},
+      {"[planner]", "leaf_size = 0", "planner.leaf_size: must be from 1 to 65536, got 0"},
+      {"[planner]", "leaf_size = 4.5", "planner.leaf_size: must be a whole number"},
       {"threads = 1", "threads = 1.5", "planner.threads: must be a whole number"},
       {"threads = 1", "threads = 4294967297", "planner.threads: must be from 0 to 2147483647, got 4294967297"},
       {"threads = 1", "threads = -1", "planner.threads: must be from 0"},
@@ -414,13 +438,13 @@ TEST(ProblemBudget, MaxTrianglesReachesTheCadImport) {
   auto small = load_problem(dir / "small.toml");
   ASSERT_TRUE(small) << small.error().message;
   EXPECT_EQ(small->max_triangles, 4u);
-  const auto scene = load_scene(*small, small->fitter);
+  const auto scene = load_scene(*small, small->build);
   ASSERT_FALSE(scene);
   EXPECT_NE(scene.error().message.find("max_triangles"), std::string::npos) << scene.error().message;
   EXPECT_FALSE(load_problem(dir / "zero.toml"));
   auto fine = load_problem(dir / "fine.toml");
   ASSERT_TRUE(fine) << fine.error().message;
-  EXPECT_TRUE(load_scene(*fine, fine->fitter));
+  EXPECT_TRUE(load_scene(*fine, fine->build));
   fs::remove_all(dir);
 }
 

@@ -19,7 +19,7 @@ TEST(ScenePlan, EveryTestScaleSceneIsSolved) {
     ASSERT_TRUE(report) << report.error().message;
     auto problem = load_problem(report->problem_file);
     ASSERT_TRUE(problem) << problem.error().message;
-    auto scene = load_scene(*problem, problem->fitter);
+    auto scene = load_scene(*problem, problem->build);
     ASSERT_TRUE(scene) << scene.error().message;
     const PlanResult r = plan(*problem, *scene);
     ASSERT_TRUE(r.solved()) << info.name << ": " << r.message;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,22 +22,67 @@ enum class Fitter : std::uint8_t {
 
 /// How a node's triangles are divided between its two children (SPEC §2.2).
 enum class SplitRule : std::uint8_t {
-  min_sa,   ///< IPS CDC: try e1, e2, e3 and keep the smallest SA(left) + SA(right).
-  largest,  ///< PQP: split across e1 only.
+  min_sa,      ///< IPS CDC: try e1, e2, e3; keep the smallest SA(left) + SA(right), each side's
+               ///< RSS fitted as that child's own (the paper's eq. (4)).
+  largest,     ///< PQP: split across e1 only.
+  min_sa_box,  ///< min-sa costed by each side's bounding box in the node's frame (cheaper).
 };
+
+/// A fitter's matrix, as the fused two-pass kernel of src/bvh/fitter.cpp computes it (SPEC §2.1):
+/// over a node's triangles i with area A_i, centroid m_i and vertex scatter
+/// S_i = Σ_v (v − m_i)(v − m_i)ᵀ, the split point is c = Σ w_i m_i / Σ w_i and the matrix is
+/// scale · Σ w_i (k_center (m_i − c)(m_i − c)ᵀ + k_scatter S_i), with w_i = A_i when
+/// `area_weighted`, else 1; scale = 1 / (3n) when `per_vertex`, else 1, divided by the smallest
+/// non-degenerate area when `by_min_area`. A recipe that weights by area falls back to PQP_FIT's
+/// on sets of zero total area.
+struct FitterRecipe {
+  bool area_weighted = false;
+  double k_center = 3.0;
+  double k_scatter = 1.0;
+  bool per_vertex = true;
+  bool by_min_area = false;
+};
+
+/// One row of the fitter table: every CLI option, error message, benchmark table and test
+/// iterates `all_fitters()`, so that adding a fitter is one row (and its recipe).
+struct FitterInfo {
+  Fitter fitter;
+  std::string_view name;        ///< how files and the CLI spell it: "inertia"
+  std::string_view paper_name;  ///< how the paper names it: "INERTIA_FIT"
+  std::string_view summary;     ///< one line for --help and docs
+  FitterRecipe recipe;
+};
+/// The fitters, in the paper's order (PQP_FIT first: the baseline of every ratio).
+std::span<const FitterInfo> all_fitters();
+const FitterInfo& info(Fitter f);
+
+/// One row of the split-rule table.
+struct SplitRuleInfo {
+  SplitRule rule;
+  std::string_view name;     ///< "min-sa"
+  std::string_view summary;  ///< one line for --help and docs
+};
+std::span<const SplitRuleInfo> all_split_rules();
+const SplitRuleInfo& info(SplitRule s);
 
 std::string_view to_string(Fitter f);
 std::string_view to_string(SplitRule s);
-/// Parses "pqp" | "rapid2" | "inertia". Returns false on anything else.
+/// The table's names joined: "pqp, rapid2, inertia" (for messages and --help).
+std::string fitter_names(std::string_view separator = ", ");
+std::string split_rule_names(std::string_view separator = ", ");
+/// Parses a name of the fitter table. Returns false on anything else.
 bool parse_fitter(std::string_view text, Fitter& out);
-/// Parses "min-sa" | "largest". Returns false on anything else.
+/// Parses a name of the split-rule table. Returns false on anything else.
 bool parse_split_rule(std::string_view text, SplitRule& out);
+
+/// The largest leaf size a build accepts.
+inline constexpr int kMaxLeafSize = 1 << 16;
 
 /// Build options. The defaults are the paper's method with IPS CDC's split rule.
 struct BuildConfig {
   Fitter fitter = Fitter::inertia;
   SplitRule split = SplitRule::min_sa;
-  int leaf_size = 1;       ///< a node with at most this many triangles is a leaf (≥ 1)
+  int leaf_size = 1;       ///< a node with at most this many triangles is a leaf (1 … kMaxLeafSize)
   bool parallel = true;    ///< use oneTBB; the tree is identical either way
 };
 

@@ -39,11 +39,11 @@ struct PlanScene {
 };
 
 /// Imports every mesh of the problem (units, deflection, poses applied) and builds the trees
-/// with `fitter`. Errors name the mesh file.
-Result<PlanScene> load_scene(const Problem& problem, Fitter fitter);
+/// with `config` (usually `problem.build`). Errors name the mesh file.
+Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config);
 
 /// A scene from meshes already in memory (obstacles in the world, body in the body frame).
-Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, Fitter fitter,
+Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, const BuildConfig& config,
                              std::optional<Vec3> reference_point = std::nullopt);
 
 /// At `pose`, is a part of the body inside a closed part of the obstacles, or an obstacle part

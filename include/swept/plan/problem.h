@@ -40,7 +40,7 @@ struct Problem {
   std::array<std::array<double, 2>, 3> rotation_limits{{{-1, 1}, {-1, 1}, {-1, 1}}};  ///< radians
   double clearance = 0.0;         ///< certified margin along the whole path
   double contact_tolerance = 0.0; ///< the body may start this close (touching) to the obstacles
-  Fitter fitter = Fitter::inertia;
+  BuildConfig build;             ///< how both trees are built: fitter, split rule, leaf size
   double time_limit = 60.0;       ///< seconds
   int threads = 0;                ///< 0: all cores
   double deflection = 0.1;        ///< default BRepMesh linear deflection for CAD meshes
