@@ -22,7 +22,8 @@ std::vector<Vec3> candidate_directions(const PlanContext& context, const Pose& s
   if (problem.goal) add_direction(dirs, context.reference_at(*problem.goal) - context.reference_at(start));
   for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
     add_direction(dirs, d);
-  const Fit principal = fit(context.scene.body.triangles, Fitter::inertia);
+  // The axes the problem's own fitter gives the body's triangles (inertia by default).
+  const Fit principal = fit(context.scene.body.triangles, problem.build.fitter);
   for (int i = 0; i < 3; ++i) {
     add_direction(dirs, start.rotation * principal.axes.col(i));
     add_direction(dirs, -(start.rotation * principal.axes.col(i)));

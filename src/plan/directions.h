@@ -9,8 +9,9 @@ namespace swept::detail {
 
 /// Unit directions for straight moves of the body from `start`, without near-repeats
 /// (cosine > 1 − 1e-9): toward the goal pose's reference point, then +z, −z, +x, −x, +y, −y
-/// (most parts come out upwards), then ± each of the body's principal axes of inertia at
-/// `start`'s orientation.
+/// (most parts come out upwards), then ± each of the body's axes at `start`'s orientation, as
+/// the problem's fitter (`problem.build.fitter`; inertia by default) fits them to all of the
+/// body's triangles.
 std::vector<Vec3> candidate_directions(const PlanContext& context, const Pose& start);
 
 /// Adds the unit vector of `d` to `list` unless it is (near) zero or (near) repeats one there.
