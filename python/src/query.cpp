@@ -137,16 +137,17 @@ pyb::dict motion_py(const PyBvh& a, const PyBvh& b, const pyb::handle& poses_a_i
   MotionRequest request;
   request.margin = margin;
   request.max_queries = max_queries;
-  request.reference = reference_in.is_none() ? box_centre(tree(b)) : to_vec3(reference_in, "reference");
+  const Vec3 reference = reference_in.is_none() ? box_centre(tree(b)) : to_vec3(reference_in, "reference");
+  double radius = 0.0;
   if (radius_in.is_none()) {
-    request.radius = motion_radius(tree(b), request.reference);
+    radius = motion_radius(tree(b), reference);
   } else {
-    request.radius = radius_in.cast<double>();
-    if (!std::isfinite(request.radius) || request.radius < 0)
-      throw InputError("radius must be a finite number >= 0, not " + std::to_string(request.radius));
-    const double needed = motion_radius(tree(b), request.reference);
-    if (request.radius < needed)
-      throw InputError("radius " + std::to_string(request.radius) + " is smaller than the body's radius about the reference (" +
+    radius = radius_in.cast<double>();
+    if (!std::isfinite(radius) || radius < 0)
+      throw InputError("radius must be a finite number >= 0, not " + std::to_string(radius));
+    const double needed = motion_radius(tree(b), reference);
+    if (radius < needed)
+      throw InputError("radius " + std::to_string(radius) + " is smaller than the body's radius about the reference (" +
                        std::to_string(needed) + "): the certificate would not hold");
   }
   const auto n = static_cast<pyb::ssize_t>(k);
@@ -157,16 +158,16 @@ pyb::dict motion_py(const PyBvh& a, const PyBvh& b, const pyb::handle& poses_a_i
   double *tb = t_blocked.mutable_data(), *ab = at_block.mutable_data(), *md = min_d.mutable_data();
   std::int64_t* q = queries.mutable_data();
   parallel_for(k, threads, [&](std::size_t i) {
-    const MotionResult r = swept::motion_clearance(tree(a), pa[i], tree(b), from[i], to[i], request);
-    f[i] = r.free, tb[i] = r.t_blocked, ab[i] = r.distance_at_block, md[i] = r.min_distance, q[i] = r.distance_queries;
+    const MotionResult r = swept::motion_clearance(tree(a), pa[i], tree(b), {from[i], to[i], reference, radius}, request);
+    f[i] = r.clear(), tb[i] = r.t_blocked, ab[i] = r.distance_at_block, md[i] = r.min_distance, q[i] = r.distance_queries;
   });
   pyb::dict out;
   out["free"] = free, out["t_blocked"] = t_blocked, out["distance_at_block"] = at_block, out["min_distance"] = min_d;
   out["distance_queries"] = queries;
   auto ref = new_array<double>({3});
-  for (int c = 0; c < 3; ++c) ref.mutable_data()[c] = request.reference[c];
+  for (int c = 0; c < 3; ++c) ref.mutable_data()[c] = reference[c];
   out["reference"] = ref;
-  out["radius"] = request.radius;
+  out["radius"] = radius;
   return out;
 }
 

@@ -146,7 +146,7 @@ def tolerance(a: BVH, b: BVH, poses_a: Any = None, poses_b: Any = None, toleranc
 
 
 def motion_clearance(a: BVH, b: BVH, poses_a: Any, poses_from: Any, poses_to: Any, *, margin: float = 0.0,
-                     reference: Any = None, radius: Optional[float] = None, max_queries: int = 100000,
+                     reference: Any = None, radius: Optional[float] = None, max_queries: int = 200000,
                      threads: int = 0) -> MotionResult:
     """Certified motion clearance (Schwarzer, Saha, Latombe 2005): does B, moving from
     poses_from[k] to poses_to[k] (reference point linear, rotation slerped about it), keep a

@@ -1,6 +1,7 @@
 // The final certification of a path (the planner's last phase, and `swept check`): every
-// segment certified with the planner's certificate (checker.h), the smallest exact distance
-// found along it, and the start-contact exemption applied pair by pair (docs/planner.md).
+// segment certified with the planner's certificate (checker.h, over the query layer's
+// `certify_motion`), the smallest exact distance found along it, and the start-contact
+// exemption applied pair by pair (docs/planner.md).
 #include "swept/plan/check.h"
 
 #include "checker.h"
@@ -88,28 +89,34 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
   tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
     SegmentCheck& sc = out.segments[i];
     auto pose_at = [&](double t) { return pose_on(i, t); };
-    detail::Blocked blocked;
+    // Where the certificate stopped: the parameter and the distance found there (≤ the
+    // margin), or t = −1 when it gave up (query cap, parameter resolution).
+    double t_blocked = -1.0, distance_at_block = 0.0;
+    auto certify = [&](double da, double db, bool relaxed) {
+      const Certificate c = check.certify(poses[i], da, poses[i + 1], db, relaxed);
+      if (c.status == MotionStatus::blocked) t_blocked = c.t_blocked, distance_at_block = c.distance_at_block;
+      return c.clear();
+    };
     if (escape && i == 0) {
       sc.escape = true;
       // An escape is a pure translation; its end must have the full clearance.
       const bool translation = rotation_angle(poses[0].rotation, poses[1].rotation) <= 1e-12;
-      sc.certified = translation && at_waypoint[1] > margin &&
-                     check.certify(poses[0], -1, poses[1], -1, /*relaxed=*/true, &blocked);
-      if (!translation) blocked = {0.0, at_waypoint[0]};
-      else if (!(at_waypoint[1] > margin)) blocked = {1.0, at_waypoint[1]};
+      sc.certified = translation && at_waypoint[1] > margin && certify(-1, -1, /*relaxed=*/true);
+      if (!translation) t_blocked = 0.0, distance_at_block = at_waypoint[0];
+      else if (!(at_waypoint[1] > margin)) t_blocked = 1.0, distance_at_block = at_waypoint[1];
       const Minimum other =
           sampled_minimum(check, pose_at, check.exact(poses[0], true), check.exact(poses[1], true), true);
       sc.min_distance_other_pairs = other.value;
     } else {
       // The waypoints' exact distances are the certificate's end bounds.
-      sc.certified = check.certify(poses[i], at_waypoint[i], poses[i + 1], at_waypoint[i + 1], false, &blocked);
+      sc.certified = certify(at_waypoint[i], at_waypoint[i + 1], false);
     }
     const Minimum m = sampled_minimum(check, pose_at, at_waypoint[i], at_waypoint[i + 1], false);
     sc.min_distance = m.value;
     sc.t_min = m.t;
     if (!sc.certified) {
-      sc.t_blocked = blocked.t;
-      sc.distance_at_block = blocked.distance;
+      sc.t_blocked = t_blocked;
+      sc.distance_at_block = distance_at_block;
     }
   });
 
@@ -143,7 +150,7 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
       out.first_bad_distance = sc.t_blocked >= 0.0 ? sc.distance_at_block : check.exact(out.first_bad_pose);
     }
   }
-  out.distance_queries = check.distance_queries.load();
+  out.distance_queries = check.distance_queries();
   std::ostringstream os;
   if (inside) {
     out.valid = false;

@@ -2,8 +2,11 @@
 // dynamic collision checking for single and multiple articulated robots in complex
 // environments"): a sub-segment [t0, t1] is free when no body point can travel farther than
 // the clearances at its ends allow, L(t0, t1) < (D(t0) − margin) + (D(t1) − margin); otherwise
-// it is bisected. Distances are asked only for what the certificate needs (`enough`).
-#include "swept/query/query.h"
+// it is bisected. The one certificate of the library: motion_clearance, the planner's search
+// and its final certification (src/plan/checker.h) all run `certify_motion`.
+#include "swept/query/motion.h"
+
+#include "swept/geometry/assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,63 +29,89 @@ double motion_length(const Pose& from, const Pose& to, const Vec3& reference, do
   return travel + radius * angle;
 }
 
-MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& from,
-                              const Pose& to, const MotionRequest& request) {
-  MotionResult out;
-  const double m = request.margin;
-  // The sub-segment [t0, t1] of the interpolated motion has length (t1 − t0)·total: the
-  // reference point moves linearly and the slerp turns at a constant rate. The relative
-  // allowance covers rounding in the interpolated poses.
-  const double total =
-      motion_length(from, to, request.reference, request.radius) * (1.0 + 1e-9);
+Pose Motion::at(double t) const {
+  return t <= 0.0 ? from : (t >= 1.0 ? to : interpolate(from, to, t, reference));
+}
 
-  auto clearance = [&](double t, double enough) {
-    const Pose pose = t == 0.0 ? from : (t == 1.0 ? to : interpolate(from, to, t, request.reference));
-    const DistanceResult d = distance(a, pose_a, b, pose, {.enough = enough});
+Certificate certify_motion(const Motion& motion, const DistanceBound& distance_at,
+                           const CertificateOptions& options) {
+  Certificate out;
+  SWEPT_ASSERT(motion.radius >= 0.0, "Motion::radius must be given (motion_radius of the body)");
+  if (!(motion.radius >= 0.0)) {
+    out.status = MotionStatus::invalid_motion;
+    return out;
+  }
+  const double m = options.margin;
+  SWEPT_ASSERT(m >= 0.0, "the certificate's margin must be ≥ 0");
+  // The sub-segment [t0, t1] has length (t1 − t0)·total: the reference point moves linearly
+  // and the slerp turns at a constant rate. The relative allowance covers rounding in the
+  // interpolated poses.
+  const double total = motion.length() * (1.0 + 1e-9);
+  auto query = [&](double t, double enough) {
     ++out.distance_queries;
-    out.stats.bv_tests += d.stats.bv_tests;
-    out.stats.triangle_tests += d.stats.triangle_tests;
-    out.min_distance = std::min(out.min_distance, d.distance);
-    return d.distance;
+    const double d = distance_at(motion.at(t), enough);
+    out.min_distance = std::min(out.min_distance, d);
+    return d;
   };
   auto blocked = [&](double t, double d) {
-    out.free = false;
+    out.status = MotionStatus::blocked;
     out.t_blocked = t;
     out.distance_at_block = d;
     return out;
   };
+  // Contact always blocks: with margin 0 a pose blocks at distance 0. The `enough` asked for
+  // is always above the margin, so a bound returned at or below the margin is exact.
+  const double d0 = options.from_bound >= 0.0 ? options.from_bound : query(0.0, m + total);
+  const double d1 = options.to_bound >= 0.0 ? options.to_bound : query(1.0, m + total);
+  out.min_distance = std::min({out.min_distance, d0, d1});
+  if (d0 <= m) return blocked(0.0, d0);
+  if (d1 <= m) return blocked(1.0, d1);
 
-  // The first end alone certifies everything when D(0) − m > total.
-  const double d0 = clearance(0.0, std::max(m, total + m));
-  // Contact always blocks, so a zero margin means collision-free.
-  auto too_close = [m](double d) { return d < m || d <= 0.0; };
-  if (too_close(d0)) return blocked(0.0, d0);
-  if (out.distance_queries >= request.max_queries) return out;
-  const double d1 = clearance(1.0, std::max(m, total + 2.0 * m - d0));
-  if (too_close(d1)) return blocked(1.0, d1);
-
-  struct Segment {
-    double t0, t1, d0, d1;
+  struct Piece {
+    double t0, d0, t1, d1;
   };
-  std::vector<Segment> stack;  // depth first, earliest sub-segment first
-  stack.push_back({0.0, 1.0, d0, d1});
+  std::vector<Piece> stack{{0.0, d0, 1.0, d1}};  // depth first, earliest piece on top
+  int bisections = 0;
   while (!stack.empty()) {
-    const Segment s = stack.back();
+    const Piece p = stack.back();
     stack.pop_back();
-    const double length = (s.t1 - s.t0) * total;
-    if (length < (s.d0 - m) + (s.d1 - m)) continue;  // certified free
-    const double tm = 0.5 * (s.t0 + s.t1);
-    if (out.distance_queries >= request.max_queries || !(tm > s.t0 && tm < s.t1)) {
-      return out;  // not certified (cap reached or parameter resolution exhausted)
+    const double length = total * (p.t1 - p.t0);
+    if (length < (p.d0 - m) + (p.d1 - m)) continue;  // certified free
+    // Too many pieces, or pieces too short to split, mean the motion grazes the margin:
+    // refuse rather than loop.
+    if (++bisections > options.max_queries || p.t1 - p.t0 < 1e-9) {
+      out.status = MotionStatus::refused_cap;
+      return out;
     }
-    const double half = 0.5 * length;
-    const double need = std::max({m, half + 2.0 * m - s.d0, half + 2.0 * m - s.d1});
-    const double dm = clearance(tm, need);
-    if (too_close(dm)) return blocked(tm, dm);
-    stack.push_back({tm, s.t1, dm, s.d1});
-    stack.push_back({s.t0, tm, s.d0, dm});
+    if ((bisections & 63) == 0 && options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+      out.status = MotionStatus::deadline;
+      return out;
+    }
+    const double tm = 0.5 * (p.t0 + p.t1);
+    const double dm = query(tm, m + 0.5 * length);
+    if (dm <= m) return blocked(tm, dm);
+    stack.push_back({tm, dm, p.t1, p.d1});
+    stack.push_back({p.t0, p.d0, tm, dm});
   }
-  out.free = true;
+  out.status = MotionStatus::clear;
+  return out;
+}
+
+MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
+                              const MotionRequest& request) {
+  MotionResult out;
+  auto tree_distance = [&](const Pose& pose, double enough) {
+    const DistanceResult d = distance(a, pose_a, b, pose, {.enough = enough});
+    out.stats.bv_tests += d.stats.bv_tests;
+    out.stats.triangle_tests += d.stats.triangle_tests;
+    return d.distance;
+  };
+  const Certificate c = certify_motion(motion, tree_distance, {.margin = request.margin, .max_queries = request.max_queries});
+  out.status = c.status;
+  out.t_blocked = c.t_blocked;
+  out.distance_at_block = c.distance_at_block;
+  out.min_distance = c.min_distance;
+  out.distance_queries = c.distance_queries;
   return out;
 }
 

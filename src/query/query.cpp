@@ -23,6 +23,11 @@ using detail::Relative;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+bool pair_less(const ContactPair& x, const ContactPair& y) {
+  return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
+}
+void sort_pairs(std::vector<ContactPair>& pairs) { std::sort(pairs.begin(), pairs.end(), pair_less); }
+
 /// Collision traversal: separated when some projection gap exceeds the radii (+ contact
 /// tolerance), exactly like an OBB separating-axis test.
 CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
@@ -31,48 +36,32 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
   CollideResult out;
   if (a.empty() || b.empty()) return out;
   const double touch = 1e-12 * detail::coordinate_bound(a, b, rel);
-  auto separated = [&](const Node& na, const Node& nb) {
+  auto overlapping = [&](std::int32_t ia, std::int32_t ib) {
     ++out.stats.bv_tests;
-    const RectanglePair p = node_pair(na.bv, nb.bv, rel);
-    const double limit = na.bv.radius + nb.bv.radius + touch;
-    return rectangle_gap(p, limit) > limit;
+    const Rss& na = a.nodes[ia].bv;
+    const Rss& nb = b.nodes[ib].bv;
+    const double limit = na.radius + nb.radius + touch;
+    return !(rectangle_gap(node_pair(na, nb, rel), limit) > limit);
   };
-  if (separated(a.nodes[0], b.nodes[0])) return out;
-  PairStack stack(a, b);
-  stack.push(0, 0, 0.0);
-  while (!stack.empty()) {
-    const detail::PairEntry e = stack.pop();
-    const Node& na = a.nodes[e.a];
-    const Node& nb = b.nodes[e.b];
-    if (na.is_leaf() && nb.is_leaf()) {
-      for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
-        const Triangle tb = rel.apply(b.triangles[j]);
-        for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
-          ++out.stats.triangle_tests;
-          if (triangles_intersect(a.triangles[i], tb)) {
-            out.colliding = true;
-            out.contacts.push_back({a.triangle_ids[i], b.triangle_ids[j]});
-            if (first_a && out.contacts.size() == 1) {
-              *first_a = i;
-              *first_b = j;
-            }
-            if (!request.all_contacts) return out;
-          }
+  auto leaves = [&](const Node& na, const Node& nb) {
+    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+      const Triangle tb = rel.apply(b.triangles[j]);
+      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+        ++out.stats.triangle_tests;
+        if (!triangles_intersect(a.triangles[i], tb)) continue;
+        out.colliding = true;
+        out.contacts.push_back({a.triangle_ids[i], b.triangle_ids[j]});
+        if (first_a && out.contacts.size() == 1) {
+          *first_a = i;
+          *first_b = j;
         }
+        if (!request.all_contacts) return false;
       }
-      continue;
     }
-    if (descend_a(na, nb)) {
-      for (std::int32_t c = na.first + 1; c >= na.first; --c)
-        if (!separated(a.nodes[c], nb)) stack.push(c, e.b, 0.0);
-    } else {
-      for (std::int32_t c = nb.first + 1; c >= nb.first; --c)
-        if (!separated(na, b.nodes[c])) stack.push(e.a, c, 0.0);
-    }
-  }
-  std::sort(out.contacts.begin(), out.contacts.end(), [](const ContactPair& x, const ContactPair& y) {
-    return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
-  });
+    return true;
+  };
+  detail::for_each_leaf_pair(a, b, overlapping, leaves);
+  sort_pairs(out.contacts);
   return out;
 }
 
@@ -274,9 +263,7 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
 
 bool TrianglePairs::contains(std::uint32_t triangle_a, std::uint32_t triangle_b) const {
   const ContactPair key{triangle_a, triangle_b};
-  return std::binary_search(pairs.begin(), pairs.end(), key, [](const ContactPair& x, const ContactPair& y) {
-    return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
-  });
+  return std::binary_search(pairs.begin(), pairs.end(), key, pair_less);
 }
 
 ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
@@ -286,44 +273,28 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
   if (a.empty() || b.empty() || !(threshold > 0.0)) return out;
   const Relative rel(pose_a, pose_b);
   // A node pair whose RSS lower bound reaches the threshold holds no reported pair.
-  auto far = [&](std::int32_t ia, std::int32_t ib) {
+  auto near = [&](std::int32_t ia, std::int32_t ib) {
     ++out.stats.bv_tests;
     const Rss& na = a.nodes[ia].bv;
     const Rss& nb = b.nodes[ib].bv;
     const double radii = na.radius + nb.radius;
-    return rectangle_lower_bound(node_pair(na, nb, rel), threshold + radii) - radii >= threshold;
+    return rectangle_lower_bound(node_pair(na, nb, rel), threshold + radii) - radii < threshold;
   };
-  if (far(0, 0)) return out;
-  PairStack stack(a, b);
-  stack.push(0, 0, 0.0);
-  while (!stack.empty()) {
-    const detail::PairEntry e = stack.pop();
-    const Node& na = a.nodes[e.a];
-    const Node& nb = b.nodes[e.b];
-    if (na.is_leaf() && nb.is_leaf()) {
-      for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
-        const Triangle tb = rel.apply(b.triangles[j]);
-        for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
-          ++out.stats.triangle_tests;
-          TriangleDistance d;
-          if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold)
-            out.pairs.pairs.push_back({a.triangle_ids[i], b.triangle_ids[j]});
-        }
+  auto leaves = [&](const Node& na, const Node& nb) {
+    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+      const Triangle tb = rel.apply(b.triangles[j]);
+      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+        ++out.stats.triangle_tests;
+        TriangleDistance d;
+        if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold)
+          out.pairs.pairs.push_back({a.triangle_ids[i], b.triangle_ids[j]});
       }
-      continue;
     }
-    if (descend_a(na, nb)) {
-      for (std::int32_t c = na.first + 1; c >= na.first; --c)
-        if (!far(c, e.b)) stack.push(c, e.b, 0.0);
-    } else {
-      for (std::int32_t c = nb.first + 1; c >= nb.first; --c)
-        if (!far(e.a, c)) stack.push(e.a, c, 0.0);
-    }
-  }
+    return true;
+  };
+  detail::for_each_leaf_pair(a, b, near, leaves);
   auto& v = out.pairs.pairs;
-  std::sort(v.begin(), v.end(), [](const ContactPair& x, const ContactPair& y) {
-    return x.triangle_a != y.triangle_a ? x.triangle_a < y.triangle_a : x.triangle_b < y.triangle_b;
-  });
+  sort_pairs(v);
   v.erase(std::unique(v.begin(), v.end(), [](const ContactPair& x, const ContactPair& y) {
             return x.triangle_a == y.triangle_a && x.triangle_b == y.triangle_b;
           }), v.end());

@@ -2,6 +2,7 @@
 // Internal pieces shared by the query implementations: B's placement in A's frame, node-pair
 // bounds and the fixed-capacity traversal stack.
 #include "swept/bvh/bvh.h"
+#include "swept/geometry/assert.h"
 #include "swept/geometry/distance.h"
 #include "swept/geometry/pose.h"
 
@@ -111,22 +112,61 @@ class PairStack {
     if (need > inline_.size()) {
       heap_.resize(need);
       data_ = heap_.data();
+      capacity_ = need;
     } else {
       data_ = inline_.data();
+      capacity_ = inline_.size();
     }
   }
   PairStack(const PairStack&) = delete;
   PairStack& operator=(const PairStack&) = delete;
 
   bool empty() const { return size_ == 0; }
-  void push(std::int32_t a, std::int32_t b, double bound) { data_[size_++] = {a, b, bound}; }
-  PairEntry pop() { return data_[--size_]; }
+  void push(std::int32_t a, std::int32_t b, double bound) {
+    SWEPT_ASSERT(size_ < capacity_, "traversal stack overflow: a tree deeper than its recorded depth");
+    data_[size_++] = {a, b, bound};
+  }
+  PairEntry pop() {
+    SWEPT_ASSERT(size_ > 0, "pop from an empty traversal stack");
+    return data_[--size_];
+  }
 
  private:
   std::array<PairEntry, 192> inline_;
   std::vector<PairEntry> heap_;
   PairEntry* data_ = nullptr;
+  std::size_t capacity_ = 0;
   std::size_t size_ = 0;
 };
+
+/// The overlap traversal shared by collide and proximity_pairs: node pairs depth first from a
+/// fixed-capacity stack, the larger node of a pair split (descend_a), its first child visited
+/// first. `keep(ia, ib)` decides whether the pair of nodes ia of A and ib of B can hold a
+/// reported triangle pair (the root pair included); `leaves(na, nb)` visits every kept pair of
+/// leaves and returns false to stop the traversal. (The distance search orders its pairs by
+/// their bounds instead and keeps its own loop, query.cpp.)
+template <class Keep, class Leaves>
+void for_each_leaf_pair(const Bvh& a, const Bvh& b, Keep&& keep, Leaves&& leaves) {
+  if (a.empty() || b.empty() || !keep(0, 0)) return;
+  PairStack stack(a, b);
+  stack.push(0, 0, 0.0);
+  while (!stack.empty()) {
+    const PairEntry e = stack.pop();
+    const Node& na = a.nodes[e.a];
+    const Node& nb = b.nodes[e.b];
+    if (na.is_leaf() && nb.is_leaf()) {
+      if (!leaves(na, nb)) return;
+      continue;
+    }
+    // Pushed second child first, so that the first child is visited first.
+    if (descend_a(na, nb)) {
+      for (std::int32_t c = na.first + 1; c >= na.first; --c)
+        if (keep(c, e.b)) stack.push(c, e.b, 0.0);
+    } else {
+      for (std::int32_t c = nb.first + 1; c >= nb.first; --c)
+        if (keep(e.a, c)) stack.push(e.a, c, 0.0);
+    }
+  }
+}
 
 }  // namespace swept::detail

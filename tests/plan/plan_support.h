@@ -47,9 +47,9 @@ inline double verify_path(const PlanScene& s, const Path& path, double margin, b
       const double d = distance(s.obstacle_tree, Pose{}, s.body_tree, q).distance;
       min_d = std::min(min_d, d);
     }
-    const MotionResult m = motion_clearance(s.obstacle_tree, Pose{}, s.body_tree, path.poses[i], path.poses[i + 1],
-                                            {.margin = margin, .reference = s.reference, .radius = r});
-    EXPECT_TRUE(m.free) << "segment " << i << " not certified (blocked at t=" << m.t_blocked << ")";
+    const MotionResult m = motion_clearance(s.obstacle_tree, Pose{}, s.body_tree,
+                                            {path.poses[i], path.poses[i + 1], s.reference, r}, {.margin = margin});
+    EXPECT_TRUE(m.clear()) << "segment " << i << " not certified (blocked at t=" << m.t_blocked << ")";
   }
   EXPECT_GE(min_d, margin) << "the path comes closer than the margin";
   return min_d;

@@ -54,14 +54,14 @@ int main(int argc, char** argv) {
   if (motion) {
     MotionRequest request;
     request.margin = tol;
-    request.reference = bounds(trees[1].triangles).center();
-    request.radius = motion_radius(trees[1], request.reference);
+    const Vec3 reference = bounds(trees[1].triangles).center();
+    const double radius = motion_radius(trees[1], reference);
     double m[21];
     while (true) {
       for (double& x : m)
         if (!(in >> x)) return 0;
-      const MotionResult r = motion_clearance(trees[0], pose7(m), trees[1], pose7(m + 7), pose7(m + 14), request);
-      std::printf("%d %.17g %.17g %.17g %d\n", r.free ? 1 : 0, r.t_blocked, r.distance_at_block, r.min_distance,
+      const MotionResult r = motion_clearance(trees[0], pose7(m), trees[1], {pose7(m + 7), pose7(m + 14), reference, radius}, request);
+      std::printf("%d %.17g %.17g %.17g %d\n", r.clear() ? 1 : 0, r.t_blocked, r.distance_at_block, r.min_distance,
                   r.distance_queries);
     }
   }

@@ -2,6 +2,7 @@
 // samples of the exact distance plus a golden-section refinement around every sampled local
 // minimum. A certified motion must never come closer than the margin; a blocked one must be
 // blocked where it says.
+#include "swept/query/motion.h"
 #include "swept/query/query.h"
 
 #include "support/test_support.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -93,15 +95,14 @@ TEST(MotionClearance, NeverCertifiesAMotionADenseCheckFindsTooClose) {
     const Pose from{rng.rotation(), rng.vec(-14, 14)};
     const Pose to{rng.rotation(), rng.vec(-14, 14)};
     const double margin = 0.05 * (it % 4);
-    const MotionResult m =
-        motion_clearance(a, Pose::identity(), b, from, to, {.margin = margin, .reference = ref, .radius = radius});
+    const MotionResult m = motion_clearance(a, Pose::identity(), b, {from, to, ref, radius}, {.margin = margin});
     const double dense = dense_minimum(a, b, from, to, ref, 10000);
-    if (m.free) {
+    if (m.clear()) {
       ++free_count;
       EXPECT_GE(dense, margin) << "certified a motion that comes within " << dense << " < " << margin;
       EXPECT_GE(m.min_distance, margin);
     } else {
-      ASSERT_GE(m.t_blocked, 0.0) << "query cap reached";
+      ASSERT_EQ(m.status, MotionStatus::blocked) << "query cap reached";
       ++blocked_count;
       const double at = distance(a, Pose::identity(), b, interpolate(from, to, m.t_blocked, ref)).distance;
       const double exact_at = m.t_blocked == 0.0 ? distance(a, Pose::identity(), b, from).distance
@@ -132,13 +133,14 @@ TEST(MotionClearance, ThinPlateBetweenSamplesIsCaught) {
       sampled_hit |= collide(a, Pose::identity(), b, interpolate(from, to, double(i) / n, ref)).colliding;
     EXPECT_FALSE(sampled_hit) << "the test setup should fool a " << n << "-sample check";
   }
-  const MotionResult m = motion_clearance(a, Pose::identity(), b, from, to, {.margin = 0.0, .reference = ref, .radius = radius});
-  EXPECT_FALSE(m.free);
+  const MotionResult m = motion_clearance(a, Pose::identity(), b, {from, to, ref, radius}, {.margin = 0.0});
+  EXPECT_EQ(m.status, MotionStatus::blocked);
   EXPECT_NEAR(m.t_blocked, 0.505, 0.001);
   // A parallel pass beside the plate is certified.
-  const MotionResult beside = motion_clearance(a, Pose::identity(), b, Pose::from_translation({-10, 0, 7}),
-                                               Pose::from_translation({10, 0, 7}), {.margin = 0.1, .reference = ref, .radius = radius});
-  EXPECT_TRUE(beside.free);
+  const MotionResult beside = motion_clearance(
+      a, Pose::identity(), b, {Pose::from_translation({-10, 0, 7}), Pose::from_translation({10, 0, 7}), ref, radius},
+      {.margin = 0.1});
+  EXPECT_TRUE(beside.clear());
   std::printf("thin plate: blocked after %d queries; pass beside it certified with %d queries\n",
               m.distance_queries, beside.distance_queries);
 }
@@ -154,8 +156,8 @@ TEST(MotionClearance, CertifiesFreeMotionsWithFewQueries) {
     const Vec3 p0 = Vec3(4, 0, 0) + rng.vec(-0.3, 0.3);
     const Vec3 p1 = Vec3(0, 4, 0) + rng.vec(-0.3, 0.3);
     const Pose from{rng.rotation(), p0}, to{rng.rotation(), p1};
-    const MotionResult m = motion_clearance(a, Pose::identity(), b, from, to, {.margin = 0.1, .radius = radius});
-    EXPECT_TRUE(m.free) << it;
+    const MotionResult m = motion_clearance(a, Pose::identity(), b, {from, to, Vec3::Zero(), radius}, {.margin = 0.1});
+    EXPECT_TRUE(m.clear()) << it;
     EXPECT_GE(dense_minimum(a, b, from, to, Vec3::Zero(), 10000), 0.1);
     total += m.distance_queries;
     worst = std::max(worst, m.distance_queries);
@@ -164,16 +166,70 @@ TEST(MotionClearance, CertifiesFreeMotionsWithFewQueries) {
   EXPECT_LE(worst, 64);
 }
 
-TEST(MotionClearance, QueryCapMeansNotCertified) {
+TEST(MotionClearance, QueryCapMeansRefused) {
   const Bvh a = build(test::box_triangles({-1, -1, -1}, {1, 1, 1}));
   const Bvh b = build(test::box_triangles({-0.2, -0.2, -0.2}, {0.2, 0.2, 0.2}));
   const double radius = motion_radius(b, Vec3::Zero());
-  // Grazing the box at exactly the margin: only the cap stops the bisection.
-  const MotionResult m = motion_clearance(a, Pose::identity(), b, Pose::from_translation({-3, 1.3, 0}),
-                                          Pose::from_translation({3, 1.3, 0}),
-                                          {.margin = 0.1, .radius = radius, .max_queries = 50});
-  EXPECT_FALSE(m.free);
-  EXPECT_LE(m.distance_queries, 50);
+  // Passing the box's top face 1e-12 above the margin: the bisection needs pieces about
+  // 1e-12 long over the face, far more than 50 queries; only the cap stops it.
+  const Motion grazing{Pose::from_translation({-3, 1.3, 0}), Pose::from_translation({3, 1.3, 0}), Vec3::Zero(), radius};
+  const MotionResult m = motion_clearance(a, Pose::identity(), b, grazing, {.margin = 0.1 - 1e-12, .max_queries = 50});
+  EXPECT_EQ(m.status, MotionStatus::refused_cap);
+  EXPECT_FALSE(m.clear());
+  EXPECT_LE(m.distance_queries, 52);  // 50 bisections and the two ends
+  // Above the pass's distance the first midpoint (over the face, 0.1 away) blocks.
+  const MotionResult too_close = motion_clearance(a, Pose::identity(), b, grazing, {.margin = 0.2});
+  EXPECT_EQ(too_close.status, MotionStatus::blocked);
+  EXPECT_EQ(too_close.t_blocked, 0.5);
+  EXPECT_NEAR(too_close.distance_at_block, 0.1, 1e-12);
+}
+
+// One certificate core: a hand-made distance function (a wall at x = 2, the body a point)
+// shows the bisection, the end bounds, the deadline and the missing radius.
+TEST(CertifyMotion, BisectsEndBoundsDeadlineAndRadius) {
+  auto wall = [](double x_wall) {
+    return [x_wall](const Pose& pose, double) { return std::abs(x_wall - pose.translation.x()); };
+  };
+  const Motion toward{Pose::from_translation({0, 0, 0}), Pose::from_translation({1, 0, 0}), Vec3::Zero(), 0.0};
+  // 1 + 1 > 1: certified from the two ends alone.
+  Certificate c = certify_motion(toward, wall(2.0), {.margin = 0.0});
+  EXPECT_EQ(c.status, MotionStatus::clear);
+  EXPECT_EQ(c.distance_queries, 2);
+  // Margin 0.5: (2 − 0.5) + (1 − 0.5) = 2 > 1, still two queries.
+  EXPECT_TRUE(certify_motion(toward, wall(2.0), {.margin = 0.5}).clear());
+  // Margin 1: the end at distance 1 blocks (a pose blocks at distance ≤ margin).
+  c = certify_motion(toward, wall(2.0), {.margin = 1.0});
+  EXPECT_EQ(c.status, MotionStatus::blocked);
+  EXPECT_EQ(c.t_blocked, 1.0);
+  // Known end bounds are used instead of queries; a weak one forces bisection.
+  int calls = 0;
+  auto counted = [&](const Pose& pose, double enough) {
+    ++calls;
+    return wall(2.0)(pose, enough);
+  };
+  c = certify_motion(toward, counted, {.margin = 0.0, .from_bound = 2.0, .to_bound = 1.0});
+  EXPECT_TRUE(c.clear());
+  EXPECT_EQ(calls, 0);
+  calls = 0;
+  c = certify_motion(toward, counted, {.margin = 0.0, .from_bound = 0.1, .to_bound = 0.1});
+  EXPECT_TRUE(c.clear());
+  EXPECT_GT(calls, 0);
+  // A wall crossed by the motion blocks at a midpoint, with the distance found there.
+  c = certify_motion(toward, wall(0.5), {.margin = 0.0});
+  EXPECT_EQ(c.status, MotionStatus::blocked);
+  EXPECT_EQ(c.t_blocked, 0.5);
+  EXPECT_EQ(c.distance_at_block, 0.0);
+  // A past deadline stops a long certificate (checked every 64 bisections).
+  const Motion along{Pose::from_translation({0, 0, 0}), Pose::from_translation({1, 0, 0}), Vec3::Zero(), 0.0};
+  auto plate = [](const Pose&, double) { return 1e-7; };  // pieces certify below 2e-7 of length
+  c = certify_motion(along, plate, {.margin = 0.0, .deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1)});
+  EXPECT_EQ(c.status, MotionStatus::deadline);
+  EXPECT_EQ(c.distance_queries, 2 + 63);
+#if !SWEPT_ASSERTS_ENABLED
+  // Without a radius the certificate refuses to answer (asserted when asserts are on).
+  const Motion no_radius{Pose::identity(), Pose::from_axis_angle(Vec3::UnitZ(), 1.0, Vec3::Zero())};
+  EXPECT_EQ(certify_motion(no_radius, wall(2.0), {}).status, MotionStatus::invalid_motion);
+#endif
 }
 
 }  // namespace

@@ -118,12 +118,12 @@ class OutsideBoxGoal : public ob::GoalSampleableRegion {
 /// Checks every segment of a path (poses of the body frame, interpolated about `reference` as
 /// OMPL's SE(3) interpolation does) for contact along the continuous motion.
 std::string verify_path(const PlanScene& scene, const std::vector<Pose>& poses) {
-  const MotionRequest request{.margin = 0.0, .reference = scene.reference, .radius = scene.radius};
   bool undecided = false;
   for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
-    const MotionResult m = motion_clearance(scene.obstacle_tree, Pose{}, scene.body_tree, poses[i], poses[i + 1], request);
-    if (m.free) continue;
-    if (m.t_blocked >= 0.0 && m.distance_at_block <= 0.0) return "collides";
+    const MotionResult m = motion_clearance(scene.obstacle_tree, Pose{}, scene.body_tree,
+                                            {poses[i], poses[i + 1], scene.reference, scene.radius}, {.margin = 0.0});
+    if (m.clear()) continue;
+    if (m.status == MotionStatus::blocked && m.distance_at_block <= 0.0) return "collides";
     undecided = true;
   }
   return undecided ? "undecided" : "free";

@@ -69,8 +69,6 @@ nlohmann::json results_json(const Results& r, const PaperOptions& o, const std::
                           {"statuses", p.statuses},
                           {"solved", p.solved},
                           {"distance_queries", p.distance_queries},
-                          {"tolerance_queries", p.tolerance_queries},
-                          {"collide_queries", p.collide_queries},
                           {"waypoints", p.waypoints},
                           {"same_path_every_run", p.same_path}});
   }
@@ -192,8 +190,6 @@ void merge_results(const fs::path& dir, const PaperOptions& o, Results& res) {
       pr.statuses = p.value("statuses", std::vector<std::string>{});
       pr.solved = get_or<int>(p, "solved", 0);
       pr.distance_queries = get_or<std::uint64_t>(p, "distance_queries", 0);
-      pr.tolerance_queries = get_or<std::uint64_t>(p, "tolerance_queries", 0);
-      pr.collide_queries = get_or<std::uint64_t>(p, "collide_queries", 0);
       pr.waypoints = get_or<std::size_t>(p, "waypoints", 0);
       pr.same_path = get_or<bool>(p, "same_path_every_run", true);
       res.plans.push_back(std::move(pr));

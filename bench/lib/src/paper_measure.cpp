@@ -156,8 +156,6 @@ void run_scene(const PaperOptions& o, const scenes::SceneInfo& info, const fs::p
         pr.statuses.emplace_back(status_name(result.status));
         pr.solved += result.solved() ? 1 : 0;
         pr.distance_queries = result.queries.distance;
-        pr.tolerance_queries = result.queries.tolerance;
-        pr.collide_queries = result.queries.collide;
         pr.waypoints = result.path.poses.size();
         if (hash && *hash != result.path_hash) pr.same_path = false;
         hash = result.path_hash;

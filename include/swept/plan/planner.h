@@ -4,12 +4,15 @@
 /// Configurations are poses of the body frame. The motion between two configurations moves the
 /// body's reference point c linearly and slerps the rotation about it; the metric
 /// d(q0, q1) = ‖Δc‖ + r_max·θ bounds how far any body point moves (r_max: the body's radius
-/// about c). Every edge of a returned path is certified by the motion-clearance query
-/// (Schwarzer, Saha, Latombe 2005): the distance stays ≥ the clearance margin along the whole
-/// continuous motion.
+/// about c). Every edge of a returned path is certified by the motion certificate
+/// (`certify_motion`, Schwarzer, Saha, Latombe 2005): the distance stays above the clearance
+/// margin along the whole continuous motion. The search follows Bohlin & Kavraki 2000 (lazy
+/// checking) and Bohlin 2001 (a multi-resolution grid); docs/planner.md walks through it.
 #include "swept/bvh/bvh.h"
 #include "swept/geometry/solid.h"
 #include "swept/plan/problem.h"
+
+#include <tbb/task_arena.h>
 
 #include <cstdint>
 #include <functional>
@@ -53,14 +56,20 @@ std::optional<std::string> enclosure_at(const PlanScene& scene, const Pose& pose
 struct PlanProgress {
   int level = 0;                ///< grid resolution level
   std::size_t nodes_checked = 0;
-  std::uint64_t queries = 0;    ///< distance + tolerance + collide queries so far
+  std::uint64_t queries = 0;    ///< distance queries so far
   double elapsed_s = 0.0;
 };
 
 /// Overrides of the problem's settings, and the progress callback.
 struct PlanOptions {
   std::optional<double> time_limit;  ///< seconds
-  std::optional<int> threads;        ///< 0: all cores
+  /// Threads for the parallel work (the final certification): plan() runs in a oneTBB task
+  /// arena of this many (0: all cores; default: the problem's `threads`). Nothing process-wide
+  /// is changed. The path is the same at any count.
+  std::optional<int> threads;
+  /// An arena owned by the caller to run in instead (then `threads` is not used): one arena
+  /// shared by many plan() calls, or the caller's own executor.
+  tbb::task_arena* arena = nullptr;
   std::function<void(const PlanProgress&)> progress;
 };
 
@@ -94,8 +103,11 @@ struct PlanResult {
   struct {
     double build = 0, search = 0, smooth = 0, total = 0;
   } time_ms;
+  /// Queries the planner issued, the final certification included: distance queries, and
+  /// proximity-pair queries (the contact pairs of a start in contact). It issues no collide or
+  /// tolerance queries.
   struct {
-    std::uint64_t distance = 0, tolerance = 0, collide = 0;
+    std::uint64_t distance = 0, proximity = 0;
   } queries;
   std::uint64_t path_hash = 0;  ///< `path_hash(path)`: equal paths, equal hashes
   int level = 0;                ///< the grid level the path was found at (-1: straight-line phase)

@@ -1,7 +1,8 @@
 #pragma once
 /// Proximity queries between two RSS trees placed in the world (SPEC §3): collide, distance,
-/// tolerance and certified motion clearance. Trees are immutable; every function here is safe
-/// to call concurrently from many threads on the same trees (no locks, no shared mutable state).
+/// tolerance and proximity pairs (certified motion clearance: motion.h, included at the end).
+/// Trees are immutable; every function here is safe to call concurrently from many threads on
+/// the same trees (no locks, no shared mutable state).
 ///
 /// Frames: `pose_a` / `pose_b` place model A / B in the world; all returned points are in the
 /// world frame; returned triangle ids are the input indices (`Bvh::triangle_ids`).
@@ -100,40 +101,6 @@ struct ToleranceResult {
 ToleranceResult tolerance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
                           const ToleranceRequest& request);
 
-// ---- motion clearance (Schwarzer, Saha, Latombe 2005) -------------------------------------------
-struct MotionRequest {
-  double margin = 0.0;             ///< required distance along the whole motion
-  Vec3 reference = Vec3::Zero();   ///< body-frame point the motion interpolates about
-  /// Max distance from `reference` to any vertex of B (body frame); compute it once with
-  /// `motion_radius`. Bounds how far body points move: ‖Δt‖ + radius·Δθ.
-  double radius = 0.0;
-  int max_queries = 100000;        ///< safety cap; exceeded → not certified (free = false)
-};
-struct MotionResult {
-  bool free = false;         ///< certified: distance ≥ margin on the whole continuous segment
-  double t_blocked = -1.0;   ///< when not free: parameter where the distance was found < margin
-  double distance_at_block = 0.0;
-  double min_distance = std::numeric_limits<double>::infinity();  ///< smallest distance bound seen
-  int distance_queries = 0;
-  QueryStats stats;
-};
-/// Is the straight motion of B (pose `from` → `to`, see `interpolate`) against A at `pose_a`
-/// free with distance ≥ margin everywhere? Never reports free when it is not. Contact
-/// (distance 0) always blocks, so margin 0 asks for a collision-free motion. Distances are
-/// between the triangle surfaces (a body wholly inside a closed mesh is not in contact).
-/// Each sub-segment [t0, t1] is certified when (t1 − t0)·motion_length < (D(t0) − margin) +
-/// (D(t1) − margin), else bisected depth first (Schwarzer, Saha, Latombe 2005); the distance
-/// queries stop as soon as they prove what the certificate needs (`DistanceRequest::enough`).
-MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& from,
-                              const Pose& to, const MotionRequest& request);
-
-/// Max distance from `reference` to any vertex of the tree's triangles (model frame).
-double motion_radius(const Bvh& b, const Vec3& reference);
-
-/// Motion metric of SPEC §4: ‖Δ reference point‖ + radius · angle(R0, R1). No body point
-/// moves farther than this along the interpolated motion.
-double motion_length(const Pose& from, const Pose& to, const Vec3& reference, double radius);
-
 // ---- batches -----------------------------------------------------------------------------------
 /// Many poses of B against A, answered in parallel (oneTBB); results in input order.
 std::vector<DistanceResult> distance_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
@@ -144,3 +111,5 @@ std::vector<CollideResult> collide_batch(const Bvh& a, const Pose& pose_a, const
                                          const CollideRequest& request = {});
 
 }  // namespace swept
+
+#include "swept/query/motion.h"  // IWYU pragma: export

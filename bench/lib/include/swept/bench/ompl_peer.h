@@ -4,7 +4,7 @@
 ///   about c) in SE3StateSpace, or RealVectorStateSpace(3) when the problem fixes the rotation.
 ///   OMPL's SE(3) interpolation (linear translation, slerp) is then exactly swept's local path,
 ///   and the translation bounds are exactly swept's bounds on the reference point
-///   (planner_search_space(), search_space.h).
+///   (swept::search_space(), include/swept/plan/search_space.h).
 /// - validity: fcl::collide of BVHModel<OBBRSSd> body against the obstacles, then
 ///   fcl::distance ≥ the problem's clearance (swept certifies the same margin); rotation limits
 ///   (mode "limits") checked on the rotation vector relative to the start orientation, as swept's

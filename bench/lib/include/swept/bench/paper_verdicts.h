@@ -93,7 +93,7 @@ struct PlanRow {
   Spread wall_ms;  ///< wall time of plan() (inflated by other processes on a shared machine)
   std::vector<std::string> statuses;
   int solved = 0;
-  std::uint64_t distance_queries = 0, tolerance_queries = 0, collide_queries = 0;
+  std::uint64_t distance_queries = 0;
   std::size_t waypoints = 0;
   bool same_path = true;  ///< the same path hash on every run
 };

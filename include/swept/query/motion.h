@@ -1,0 +1,111 @@
+#pragma once
+/// Certified clearance of a straight motion (Schwarzer, Saha, Latombe 2005): the one certificate
+/// of the library. `certify_motion` is the core, over any distance function (the planner's
+/// passes its contact exemption); `motion_clearance` is the same certificate against a tree.
+#include "swept/bvh/bvh.h"
+#include "swept/geometry/pose.h"
+#include "swept/query/query.h"
+
+#include <chrono>
+#include <functional>
+#include <limits>
+#include <optional>
+
+namespace swept {
+
+/// Max distance from `reference` to any vertex of the tree's triangles (model frame).
+double motion_radius(const Bvh& b, const Vec3& reference);
+
+/// Motion metric of SPEC §4: ‖Δ reference point‖ + radius · angle(R0, R1). No body point
+/// moves farther than this along the interpolated motion.
+double motion_length(const Pose& from, const Pose& to, const Vec3& reference, double radius);
+
+/// A straight motion of a body (see `interpolate`): the body-frame `reference` point moves on a
+/// line from `from` to `to` while the rotation slerps about it.
+struct Motion {
+  Pose from = Pose{};
+  Pose to = Pose{};
+  Vec3 reference = Vec3::Zero();  ///< body frame
+  /// Max distance from `reference` to any vertex of the body (body frame; `motion_radius`).
+  /// Required: it bounds how far body points move, and a radius of 0 would certify a pure
+  /// rotation from its end distances alone. NaN means "not given": certifying such a motion is
+  /// a programmer error (asserted; the certificate answers `invalid_motion` when asserts are off).
+  double radius = std::numeric_limits<double>::quiet_NaN();
+
+  /// ‖Δ reference point‖ + radius · angle: no body point moves farther (`motion_length`).
+  double length() const { return motion_length(from, to, reference, radius); }
+  /// The pose at parameter t ∈ [0, 1]: `from` and `to` exactly at the ends.
+  Pose at(double t) const;
+};
+
+/// How a certificate ended.
+enum class MotionStatus {
+  clear,           ///< certified: the distance stays above the margin along the whole motion
+  blocked,         ///< a pose at distance ≤ margin was found (t_blocked, distance_at_block)
+  refused_cap,     ///< gave up: more bisection queries than the cap, or pieces shorter than the
+                   ///< parameter resolution (1e-9): the motion grazes the margin
+  deadline,        ///< gave up: the deadline passed
+  invalid_motion,  ///< the motion's radius is not given or negative (a programmer error)
+};
+
+/// The default cap on the bisection queries of one certificate.
+inline constexpr int kMaxCertificateQueries = 200000;
+
+/// A lower bound on the distance at `pose`, exact when below `enough` (any value ≥ `enough`
+/// otherwise, like `DistanceRequest::enough`).
+using DistanceBound = std::function<double(const Pose& pose, double enough)>;
+
+struct CertificateOptions {
+  double margin = 0.0;  ///< required distance (≥ 0); a pose at distance ≤ margin blocks
+  int max_queries = kMaxCertificateQueries;  ///< cap on the bisection (midpoint) queries
+  /// Past this time the certificate gives up (checked every 64 bisection queries).
+  std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt;
+  /// Known lower bounds on the distance at `from` / `to` (negative: unknown, queried).
+  double from_bound = -1.0;
+  double to_bound = -1.0;
+};
+
+struct Certificate {
+  MotionStatus status = MotionStatus::refused_cap;
+  double t_blocked = -1.0;        ///< blocked: the motion parameter of the pose found
+  double distance_at_block = 0.0; ///< blocked: the distance there (≤ margin)
+  double min_distance = std::numeric_limits<double>::infinity();  ///< smallest bound seen
+  int distance_queries = 0;       ///< calls of the distance function, ends included
+
+  bool clear() const { return status == MotionStatus::clear; }
+};
+
+/// Schwarzer–Saha–Latombe certificate of `motion` with the distance function `distance_at`.
+/// With D a lower bound on the distance, the piece [t0, t1] is free when
+/// (t1 − t0)·length < (D(t0) − margin) + (D(t1) − margin): no body point moves far enough to
+/// close the gap. Otherwise its midpoint is queried (blocked when D ≤ margin there) and both
+/// halves are certified, depth first, earliest first. Distances are asked only as exactly as
+/// needed: margin + length at the ends, margin + half the piece's length at a midpoint.
+/// Never answers `clear` for a motion that comes within the margin.
+Certificate certify_motion(const Motion& motion, const DistanceBound& distance_at,
+                           const CertificateOptions& options);
+
+// ---- motion clearance against a tree --------------------------------------------------------
+struct MotionRequest {
+  double margin = 0.0;  ///< required distance along the whole motion
+  int max_queries = kMaxCertificateQueries;  ///< cap on the bisection queries (then refused)
+};
+struct MotionResult {
+  MotionStatus status = MotionStatus::refused_cap;
+  double t_blocked = -1.0;  ///< blocked: parameter where the distance was found ≤ margin
+  double distance_at_block = 0.0;
+  double min_distance = std::numeric_limits<double>::infinity();  ///< smallest distance bound seen
+  int distance_queries = 0;
+  QueryStats stats;
+
+  /// Certified: distance > margin on the whole continuous motion.
+  bool clear() const { return status == MotionStatus::clear; }
+};
+/// Is the motion of B (`motion`, see `interpolate`) against A at `pose_a` clear of A by more
+/// than the margin everywhere? `certify_motion` with the tree distance. Contact (distance 0)
+/// always blocks, so margin 0 asks for a collision-free motion. Distances are between the
+/// triangle surfaces (a body wholly inside a closed mesh is not in contact).
+MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
+                              const MotionRequest& request = {});
+
+}  // namespace swept
