@@ -2,6 +2,7 @@
 // samples of the exact distance plus a golden-section refinement around every sampled local
 // minimum. A certified motion must never come closer than the margin; a blocked one must be
 // blocked where it says.
+#include "swept/geometry/assert.h"
 #include "swept/query/motion.h"
 #include "swept/query/query.h"
 
