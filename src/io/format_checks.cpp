@@ -24,6 +24,11 @@ std::string lower(std::string s) {
 
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> out;
+  split(line, out);
+  return out;
+}
+
+void split(std::string_view line, std::vector<std::string_view>& out) {
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
@@ -32,7 +37,6 @@ std::vector<std::string_view> split(std::string_view line) {
     if (j > i) out.push_back(line.substr(i, j - i));
     i = j;
   }
-  return out;
 }
 
 std::string quoted(std::string_view s) {

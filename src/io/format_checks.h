@@ -18,6 +18,8 @@ std::string lower(std::string s);
 
 /// The whitespace-separated tokens of a line.
 std::vector<std::string_view> split(std::string_view line);
+/// The same, appended to `out` (a reused buffer: no allocation per line).
+void split(std::string_view line, std::vector<std::string_view>& out);
 /// `s` in quotes for a message, shortened when long.
 std::string quoted(std::string_view s);
 /// Parses a decimal number; "" on success, else the reason.

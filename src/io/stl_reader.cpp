@@ -2,6 +2,7 @@
 // through assimp so that a truncated binary file, a malformed line or a non-finite vertex is
 // reported with its triangle or line number (assimp accepts truncated binary STL silently and
 // parses bad ASCII numbers as 0), and so that ASCII coordinates keep their double precision.
+#include "format_checks.h"
 #include "import_detail.h"
 
 #include <algorithm>
@@ -101,14 +102,7 @@ class Lines {
       std::string_view line(text_.data() + pos_, end - pos_);
       pos_ = end + 1;
       ++line_;
-      std::size_t i = 0;
-      while (i < line.size()) {
-        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-        std::size_t j = i;
-        while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
-        if (j > i) tokens.push_back(line.substr(i, j - i));
-        i = j;
-      }
+      split(line, tokens);
       if (!tokens.empty()) return true;
     }
     return false;
