@@ -47,8 +47,12 @@ void run(const PlanCliOptions& o) {
   const bool tty = isatty(fileno(stderr)) && !o.quiet;
   if (tty) {
     options.progress = [](const PlanProgress& p) {
-      std::fprintf(stderr, "\r  level %d  nodes %zu  queries %llu  %.1f s   ", p.level, p.nodes_checked,
-                   static_cast<unsigned long long>(p.queries), p.elapsed_s);
+      if (p.level == kTreeLevel)
+        std::fprintf(stderr, "\r  trees  nodes %zu  queries %llu  %.1f s   ", p.nodes_checked,
+                     static_cast<unsigned long long>(p.queries), p.elapsed_s);
+      else
+        std::fprintf(stderr, "\r  level %d  nodes %zu  queries %llu  %.1f s   ", p.level, p.nodes_checked,
+                     static_cast<unsigned long long>(p.queries), p.elapsed_s);
       std::fflush(stderr);
     };
   }

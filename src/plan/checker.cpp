@@ -10,6 +10,11 @@ double Checker::clearance(const Pose& pose, double enough, bool relaxed) const {
   return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request).distance;
 }
 
+DistanceResult Checker::nearest(const Pose& pose, double enough) const {
+  ++distance_queries_;
+  return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, {.enough = enough});
+}
+
 double Checker::below(const Pose& pose, double bound, bool relaxed) const {
   ++distance_queries_;
   const DistanceRequest request{.enough = bound, .exclude = relaxed ? &exempt_ : nullptr};

@@ -38,6 +38,8 @@ class Checker {
   double clearance(const Pose& pose, double enough, bool relaxed = false) const;
   /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
   double below(const Pose& pose, double bound, bool relaxed = false) const;
+  /// The distance at `pose` with its witness points (world), exact below `enough` (counted).
+  DistanceResult nearest(const Pose& pose, double enough) const;
   /// Exact distance at `pose` (for reporting clearance).
   double exact(const Pose& pose, bool relaxed = false) const {
     return below(pose, std::numeric_limits<double>::infinity(), relaxed);

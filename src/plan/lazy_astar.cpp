@@ -73,6 +73,7 @@ std::optional<std::vector<GridKey>> LazyGridSearch::search_level(int level, std:
     const Entry e = open.top();
     open.pop();
     if (closed.count(e.key)) continue;
+    ++expansions_;
     if ((++expansions & 255) == 0) {
       if (context_.out_of_time()) return std::nullopt;
       report_progress(level);
@@ -146,12 +147,19 @@ std::optional<std::vector<GridKey>> LazyGridSearch::search_level(int level, std:
   return std::nullopt;
 }
 
-std::optional<std::vector<Pose>> LazyGridSearch::run(GridOutcome& outcome) {
+std::optional<std::vector<Pose>> LazyGridSearch::run(GridOutcome& outcome, std::size_t total_budget) {
+  const bool bounded = total_budget != SIZE_MAX;
   bool all_exhausted = true;
+  std::size_t unfinished = 0;  // expansions of levels that stopped at their budget
   for (int level = 0; level <= grid_.finest_level(); ++level) {
+    std::size_t budget = std::size_t{4000} << level;
+    if (level == grid_.finest_level() && !bounded) budget = std::numeric_limits<std::size_t>::max();
+    if (bounded) {
+      if (unfinished >= total_budget) break;
+      budget = std::min(budget, total_budget - unfinished);
+    }
     level_reached_ = level;
-    const std::size_t budget =
-        level == grid_.finest_level() ? std::numeric_limits<std::size_t>::max() : std::size_t{4000} << level;
+    const std::size_t before = expansions_;
     bool exhausted = false;
     if (const auto keys = search_level(level, budget, exhausted)) {
       std::vector<Pose> poses;
@@ -163,9 +171,10 @@ std::optional<std::vector<Pose>> LazyGridSearch::run(GridOutcome& outcome) {
       outcome = GridOutcome::time_limit;
       return std::nullopt;
     }
+    if (!exhausted) unfinished += expansions_ - before;
     all_exhausted = all_exhausted && exhausted;
   }
-  outcome = all_exhausted ? GridOutcome::exhausted : GridOutcome::resolution;
+  outcome = all_exhausted && level_reached_ == grid_.finest_level() ? GridOutcome::exhausted : GridOutcome::resolution;
   return std::nullopt;
 }
 

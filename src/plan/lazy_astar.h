@@ -8,6 +8,7 @@
 
 #include <absl/container/flat_hash_map.h>
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -51,8 +52,14 @@ class LazyGridSearch {
 
   /// Every level from the coarsest: coarse levels get 4000·2^level expansions, so that a level
   /// too coarse for a narrow passage does not eat the time limit; the finest runs to the time
-  /// limit. The path's poses (the last is the goal pose, or a pose in the goal region).
-  std::optional<std::vector<Pose>> run(GridOutcome& outcome);
+  /// limit. With a `total_budget`, the finest level too stops at its budget, and the search
+  /// stops (outcome `resolution`) once the levels that stopped at their budget (not those whose
+  /// open list ran empty) have taken `total_budget` expansions. The path's poses (the last is
+  /// the goal pose, or a pose in the goal region).
+  std::optional<std::vector<Pose>> run(GridOutcome& outcome, std::size_t total_budget = SIZE_MAX);
+
+  /// Expansions of every level so far.
+  std::size_t expansions() const { return expansions_; }
 
   /// Lower bound of the metric distance from `pose` to the goal (pose, or leaving the goal box).
   double heuristic(const Pose& pose) const;
@@ -69,6 +76,7 @@ class LazyGridSearch {
   absl::flat_hash_map<GridKey, NodeInfo, GridKeyHash> nodes_;
   absl::flat_hash_map<GridEdge, bool, GridEdgeHash> edges_;  ///< certified clear?
   int level_reached_ = 0;
+  std::size_t expansions_ = 0;
   double last_progress_s_ = -1.0;
 };
 

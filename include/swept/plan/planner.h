@@ -52,9 +52,12 @@ Result<PlanScene> make_scene(TriangleSoup obstacles, TriangleSoup body, const Bu
 /// nullopt. Meaningful when the surfaces do not touch at `pose`.
 std::optional<std::string> enclosure_at(const PlanScene& scene, const Pose& pose);
 
+/// `PlanResult::level` and `PlanProgress::level` of the phase that grows trees from both ends.
+inline constexpr int kTreeLevel = -2;
+
 /// Reported while planning (about once a second) for the progress line.
 struct PlanProgress {
-  int level = 0;                ///< grid resolution level
+  int level = 0;                ///< grid resolution level (kTreeLevel: the trees from both ends)
   std::size_t nodes_checked = 0;
   std::uint64_t queries = 0;    ///< distance queries so far
   double elapsed_s = 0.0;
@@ -110,7 +113,8 @@ struct PlanResult {
     std::uint64_t distance = 0, proximity = 0;
   } queries;
   std::uint64_t path_hash = 0;  ///< `path_hash(path)`: equal paths, equal hashes
-  int level = 0;                ///< the grid level the path was found at (-1: straight-line phase)
+  int level = 0;                ///< the grid level the path was found at (-1: straight-line phase; kTreeLevel: the trees)
+  std::size_t tree_nodes = 0;   ///< nodes of the trees from both ends (when that phase ran)
   std::size_t nodes_checked = 0;
   std::size_t edges_checked = 0;
 

@@ -1,0 +1,349 @@
+// Phase 3: trees from both ends toward a Halton sequence (tree_search.h).
+#include "tree_search.h"
+
+#include "swept/geometry/assert.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace swept::detail {
+namespace {
+
+double radical_inverse(std::uint64_t i, std::uint64_t base) {
+  double inverse = 1.0 / static_cast<double>(base), scale = inverse, out = 0.0;
+  for (; i > 0; i /= base, scale *= inverse) out += static_cast<double>(i % base) * scale;
+  return out;
+}
+
+Mat3 exp_rotation(const Vec3& w) {
+  const double angle = w.norm();
+  if (angle == 0.0) return Mat3::Identity();
+  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
+}
+
+Vec3 rotation_vector(const Mat3& r) {
+  const Eigen::AngleAxisd turn(r);
+  return turn.angle() * turn.axis();
+}
+
+// Rounds in which the other tree reaches for a new node take at most this many steps.
+constexpr int kConnectSteps = 64;
+// Slides along the obstacles after a blocked step.
+constexpr int kSlides = 8;
+// Roots of a goal region's tree.
+constexpr std::size_t kGoalRoots = 16;
+
+}  // namespace
+
+std::array<double, 6> Halton::point(std::uint64_t i) {
+  static constexpr std::array<std::uint64_t, 6> kBases{2, 3, 5, 7, 11, 13};
+  std::array<double, 6> out{};
+  for (std::size_t d = 0; d < kBases.size(); ++d) out[d] = radical_inverse(i, kBases[d]);
+  return out;
+}
+
+// What one sample did, computed from the trees as they stood at the start of its round.
+struct TreeSearch::Attempt {
+  /// New nodes of the growing tree and the other tree's steps toward the last of them. In each
+  /// chain the first node's parent is a node of the trees as they stood at the round's start,
+  /// and a parent −2 − k is the chain's own node k.
+  std::vector<TreeNode> grown;
+  std::vector<TreeNode> chain;
+  bool connected = false;         ///< the chain reached the new node, or the new node is in the goal region
+  std::int32_t meet = -1;         ///< connected with an empty chain: the other tree's node at the new node
+  std::optional<TreeNode> root;   ///< a goal region's sample, free: a new root of the goal tree
+  std::size_t edges = 0;          ///< motions certified
+};
+
+TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_distance, double goal_distance)
+    : context_(context) {
+  const Problem& problem = context.problem;
+  const SearchSpace& space = context.space;
+  region_ = problem.goal_outside || !problem.goal;
+  start_rotation_ = problem.start.rotation;
+  start_rotation_vector_ = rotation_vector(start.rotation * problem.start.rotation.transpose());
+  const double size = context.scene_size();
+  step_ = 0.1 * (space.bounds.max - space.bounds.min).norm();
+  min_step_ = std::max(context.check.margin(), 1e-3 * size);
+  step_ = std::max(step_, 2 * min_step_);
+  trees_[0].push_back(make_node(start, start_distance, -1));
+  if (!region_) trees_[1].push_back(make_node(*problem.goal, goal_distance, -1));
+}
+
+TreeNode TreeSearch::make_node(const Pose& pose, double distance, std::int32_t parent) const {
+  return {pose, context_.reference_at(pose), pose.quaternion(), distance, parent};
+}
+
+Pose TreeSearch::sample(std::uint64_t i) const {
+  const std::array<double, 6> u = Halton::point(i);
+  const Aabb& bounds = context_.space.bounds;
+  const Vec3 point = bounds.min + Vec3(u[0], u[1], u[2]).cwiseProduct(bounds.max - bounds.min);
+  Mat3 rotation = trees_[0].front().pose.rotation;
+  switch (context_.space.rotation) {
+    case RotationMode::none: break;
+    case RotationMode::free: {
+      const double a = std::sqrt(1.0 - u[3]), b = std::sqrt(u[3]);
+      const double s = 2 * std::numbers::pi * u[4], t = 2 * std::numbers::pi * u[5];
+      rotation = Quat(b * std::cos(t), a * std::sin(s), a * std::cos(s), b * std::sin(t)).normalized().toRotationMatrix();
+      break;
+    }
+    case RotationMode::limits: {
+      const auto& limits = context_.space.rotation_limits;
+      Vec3 w;
+      for (int k = 0; k < 3; ++k) w[k] = limits[k][0] + u[3 + k] * (limits[k][1] - limits[k][0]);
+      rotation = exp_rotation(w) * start_rotation_;
+      break;
+    }
+  }
+  return context_.pose_with_reference_at(rotation, point);
+}
+
+bool TreeSearch::inside(const Pose& pose) const {
+  const SearchSpace& space = context_.space;
+  if (!in_bounds(space, context_.reference_at(pose))) return false;
+  if (space.rotation != RotationMode::limits) return true;
+  const Vec3 w = rotation_vector(pose.rotation * start_rotation_.transpose());
+  for (int k = 0; k < 3; ++k)
+    if (w[k] < space.rotation_limits[k][0] || w[k] > space.rotation_limits[k][1]) return false;
+  return true;
+}
+
+std::int32_t TreeSearch::nearest(const std::vector<TreeNode>& tree, const Pose& pose) const {
+  const Vec3 point = context_.reference_at(pose);
+  const Quat q = pose.quaternion();
+  const double r = context_.space.radius;
+  std::int32_t best = -1;
+  double best_length = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < tree.size(); ++i) {
+    const TreeNode& n = tree[i];
+    const double moved = (n.point - point).norm();
+    if (moved >= best_length) continue;
+    const double c = std::min(1.0, std::abs(n.rotation.dot(q)));
+    const double length = moved + r * 2.0 * std::acos(c);
+    if (length < best_length) {
+      best_length = length;
+      best = static_cast<std::int32_t>(i);
+    }
+  }
+  return best;
+}
+
+std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose& target, bool& reached) const {
+  reached = false;
+  const Checker& check = context_.check;
+  const double margin = check.margin();
+  const Motion motion = check.motion(from.pose, target);
+  const double length = motion.length();
+  if (length <= 0.0) {
+    reached = true;
+    return std::nullopt;
+  }
+  const double bubble = 0.9 * (from.distance - margin);  // certified without a query
+  double s = std::min(length, std::max(step_, bubble));
+  for (int attempt = 0; attempt < 6 && s > 0.0; ++attempt) {
+    const bool whole = s >= length;
+    const Pose q = whole ? target : motion.at(s / length);
+    if (inside(q)) {
+      const double dq = check.clearance(q, margin + step_);
+      if (dq > margin) {
+        const Certificate c = check.certify(from.pose, from.distance, q, dq);
+        if (c.clear()) {
+          reached = whole;
+          TreeNode node = make_node(q, dq, -1);
+          return node;
+        }
+        if (c.status != MotionStatus::blocked) return std::nullopt;  // deadline or cap
+        s *= std::max(0.05, 0.5 * c.t_blocked);
+      } else {
+        s *= 0.5;
+      }
+    } else {
+      s *= 0.5;
+    }
+    if (s < min_step_) {
+      if (bubble <= min_step_) return std::nullopt;
+      s = bubble;  // the free ball's step is certain
+    }
+  }
+  return std::nullopt;
+}
+
+bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& target, std::vector<TreeNode>& chain,
+                        bool& reached, std::size_t& edges) const {
+  std::optional<TreeNode> next = step_toward(from, target, reached);
+  if (next) {
+    ++edges;
+    next->parent = parent;
+    chain.push_back(*next);
+    return true;
+  }
+  if (reached) return false;
+  // Blocked: slide along the obstacles toward the target (retraction, Zhang & Manocha 2008).
+  const std::size_t before = chain.size();
+  TreeNode at = from;
+  for (int k = 0; k < kSlides && !context_.out_of_time(); ++k) {
+    std::optional<TreeNode> slid = slide(at, target);
+    if (!slid) break;
+    ++edges;
+    slid->parent = parent;
+    parent = -2 - static_cast<std::int32_t>(chain.size());
+    chain.push_back(*slid);
+    at = *slid;
+    // Free again toward the target?
+    if (std::optional<TreeNode> direct = step_toward(at, target, reached)) {
+      ++edges;
+      direct->parent = parent;
+      chain.push_back(*direct);
+      return true;
+    }
+    if (reached) return true;
+  }
+  return chain.size() > before;
+}
+
+std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& target) const {
+  const Checker& check = context_.check;
+  const double margin = check.margin();
+  const DistanceResult w = check.nearest(from.pose, margin + step_);
+  if (!w.exact) return std::nullopt;
+  Vec3 n = w.point_b - w.point_a;  // from the obstacle toward the body
+  if (!(n.norm() > 0.0)) return std::nullopt;
+  n.normalize();
+  const double radius = context_.space.radius;
+  const Vec3 r = w.point_b - from.point;
+  // The motion toward the target as (Δc, r_max·ω); the body's witness point moves by
+  // Δc + ω × r, whose component along −n closes the gap: project it out.
+  Eigen::Matrix<double, 6, 1> u, j;
+  u << context_.reference_at(target) - from.point, radius * rotation_vector(target.rotation * from.pose.rotation.transpose());
+  if (context_.space.rotation == RotationMode::none) u.tail<3>().setZero();
+  j << n, (context_.space.rotation == RotationMode::none ? Vec3::Zero() : Vec3(r.cross(n) / radius));
+  const double closing = j.dot(u);
+  if (closing < 0.0) u -= closing / j.squaredNorm() * j;
+  double length = u.head<3>().norm() + u.tail<3>().norm();
+  if (!(length > 0.0)) return std::nullopt;
+  double s = std::min(length, std::max(0.25 * step_, 0.9 * (from.distance - margin)));
+  for (int attempt = 0; attempt < 4 && s >= min_step_; ++attempt, s *= 0.5) {
+    const double f = s / length;
+    Vec3 move = f * u.head<3>() + 0.1 * s * n;  // and a little away from the obstacle
+    const Mat3 rotation = exp_rotation(f * u.tail<3>() / radius) * from.pose.rotation;
+    const Pose q = context_.pose_with_reference_at(rotation, from.point + move);
+    if (!inside(q)) continue;
+    const double dq = check.clearance(q, margin + step_);
+    if (dq <= margin) continue;
+    if (check.certify(from.pose, from.distance, q, dq).clear()) return make_node(q, dq, -1);
+  }
+  return std::nullopt;
+}
+
+TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target) const {
+  Attempt out;
+  // A goal region's tree grows from free samples in the region, the first kGoalRoots of them.
+  if (region_ && trees_[1].size() < kGoalRoots && goal_reached(context_.space, context_.problem, target)) {
+    const double d = context_.check.clearance(target, context_.check.margin() + step_);
+    if (d > context_.check.margin()) out.root = make_node(target, d, -1);
+  }
+  if (trees_[grow].empty()) return out;
+  const std::vector<TreeNode>& mine = trees_[grow];
+  const std::int32_t from = nearest(mine, target);
+  bool reached = false;
+  if (!extend(mine[from], from, target, out.grown, reached, out.edges)) return out;
+  const TreeNode& grown = out.grown.back();
+  if (region_ && grow == 0) {
+    for (const TreeNode& n : out.grown) out.connected = out.connected || goal_reached(context_.space, context_.problem, n.pose);
+    if (out.connected) return out;
+  }
+  // The other tree reaches for the new node, step after step, until it gets there or is blocked.
+  const std::vector<TreeNode>& other = trees_[1 - grow];
+  if (other.empty()) return out;
+  std::int32_t parent = nearest(other, grown.pose);
+  TreeNode at = other[parent];
+  for (int k = 0; k < kConnectSteps && !context_.out_of_time(); ++k) {
+    const std::size_t before = out.chain.size();
+    const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges);
+    if (reached) {
+      out.connected = true;
+      if (out.chain.empty()) out.meet = parent;  // the other tree's node is at the new node already
+      break;
+    }
+    if (!moved || out.chain.size() == before) break;
+    parent = -2 - static_cast<std::int32_t>(out.chain.size() - 1);
+    at = out.chain.back();
+  }
+  return out;
+}
+
+std::int32_t TreeSearch::append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain) {
+  const auto base = static_cast<std::int32_t>(tree.size());
+  for (TreeNode n : chain) {
+    if (n.parent <= -2) n.parent = base + (-2 - n.parent);
+    tree.push_back(n);
+  }
+  return static_cast<std::int32_t>(tree.size() - 1);
+}
+
+std::vector<Pose> TreeSearch::path_through(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const {
+  // Root of tree a … node a, then node b … root of tree b; tree 0 grows from the start.
+  std::vector<Pose> first, second;
+  for (std::int32_t i = node_a; i >= 0; i = trees_[tree_a][i].parent) first.push_back(trees_[tree_a][i].pose);
+  std::reverse(first.begin(), first.end());
+  if (node_b >= 0)
+    for (std::int32_t i = node_b; i >= 0; i = trees_[tree_b][i].parent) second.push_back(trees_[tree_b][i].pose);
+  if (tree_a != 0) {
+    std::swap(first, second);
+    std::reverse(first.begin(), first.end());
+    std::reverse(second.begin(), second.end());
+  }
+  // The two halves meet at the same pose: keep it once.
+  if (!first.empty() && !second.empty() && first.back().rotation == second.front().rotation &&
+      first.back().translation == second.front().translation)
+    second.erase(second.begin());
+  first.insert(first.end(), second.begin(), second.end());
+  return first;
+}
+
+std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint64_t max_rounds) {
+  std::vector<Attempt> attempts(kRound);
+  std::vector<Pose> targets(kRound);
+  double last_progress_s = -1.0;
+  for (std::uint64_t round = 0; round < max_rounds; ++round) {
+    if (context_.out_of_time()) {
+      outcome = TreeOutcome::time_limit;
+      return std::nullopt;
+    }
+    if (context_.options.progress && context_.elapsed_s() - last_progress_s >= 1.0) {
+      last_progress_s = context_.elapsed_s();
+      context_.options.progress({kTreeLevel, nodes(), context_.check.distance_queries(), last_progress_s});
+    }
+    const int grow = trees_[1].empty() ? 0 : static_cast<int>(round % 2);
+    for (Pose& t : targets) t = sample(++sample_index_);
+    tbb::parallel_for(0, kRound, [&](int i) { attempts[i] = attempt(grow, targets[i]); });
+    // Added in sample order: the same trees at any thread count.
+    for (Attempt& a : attempts) {
+      context_.edges_checked += a.edges;
+      if (a.root && trees_[1].size() < kGoalRoots) trees_[1].push_back(*a.root);
+      if (a.grown.empty()) continue;
+      const std::int32_t grown = append(trees_[grow], a.grown);
+      if (region_ && grow == 0 && a.connected) {
+        outcome = TreeOutcome::found;
+        // The first of the new nodes in the goal region (each is the next one's parent) ends the path.
+        std::int32_t end = grown - static_cast<std::int32_t>(a.grown.size()) + 1;
+        while (!goal_reached(context_.space, context_.problem, trees_[0][end].pose)) ++end;
+        return path_through(0, end, 0, -1);
+      }
+      if (a.chain.empty() && !a.connected) continue;
+      const std::int32_t reach = a.chain.empty() ? a.meet : append(trees_[1 - grow], a.chain);
+      if (a.connected) {
+        outcome = TreeOutcome::found;
+        return path_through(grow, grown, 1 - grow, reach);
+      }
+    }
+  }
+  outcome = TreeOutcome::round_limit;
+  return std::nullopt;
+}
+
+}  // namespace swept::detail

@@ -1,0 +1,103 @@
+#pragma once
+// Phase 3 of the search (internal to src/plan): trees grown from both ends toward a
+// deterministic low-dispersion sequence, for what the grid does not solve within its budget —
+// detours round walls, traps, coordinated twists.
+//
+// Trees grow from the search start and from the goal pose (for a goal region, from free samples
+// in it) in the manner of RRT-Connect (Kuffner & LaValle 2000): each sample extends one tree,
+// and the other tree then reaches for the new node. The samples are a Halton sequence, not
+// random numbers (Janson, Ichter & Pavone 2018: deterministic low-dispersion sampling keeps the
+// guarantees of random sampling). Each step uses what an exact distance gives: a node's
+// distance bound D is a free ball of radius D − margin in the motion metric (Quinlan's bubbles),
+// so a step inside it is certified without a query, and longer steps are certified by the
+// adaptive certificate (Schwarzer, Saha & Latombe 2005). A step whose end is blocked is retried
+// shorter, toward the last free part of the motion.
+//
+// Determinism on every core: samples are drawn in rounds of a fixed count; every extension of
+// a round is computed from the trees as they stood at the start of the round, in parallel, and
+// the results are added in sample order, so the trees are the same at any thread count.
+#include "plan_context.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace swept::detail {
+
+/// The Halton sequence in up to 6 dimensions (bases 2, 3, 5, 7, 11, 13), from index 1.
+class Halton {
+ public:
+  /// The point of index `i` (≥ 1), each coordinate in [0, 1).
+  static std::array<double, 6> point(std::uint64_t i);
+};
+
+/// A node of a search tree.
+struct TreeNode {
+  Pose pose;
+  Vec3 point = Vec3::Zero();   ///< the reference point (world)
+  Quat rotation = Quat::Identity();  ///< of pose.rotation
+  double distance = 0.0;       ///< lower bound on the distance at `pose`
+  std::int32_t parent = -1;    ///< in the same tree; −1 for the root
+};
+
+/// How the tree phase ended without a path.
+enum class TreeOutcome { found, time_limit, round_limit };
+
+class TreeSearch {
+ public:
+  /// Trees from `start` (its distance bound `start_distance`) and from the goal pose
+  /// (`goal_distance`); for a goal region, from the first 16 free samples in the region.
+  TreeSearch(PlanContext& context, const Pose& start, double start_distance, double goal_distance);
+
+  /// Grows the trees, `kRound` samples a round, until they meet, a node of the start's tree
+  /// reaches the goal region, the time is up, or `max_rounds` rounds have run. The path's poses, start
+  /// first, goal pose (or a pose in the goal region) last.
+  std::optional<std::vector<Pose>> run(TreeOutcome& outcome, std::uint64_t max_rounds = UINT64_MAX);
+
+  /// Samples per round: fixed, so that the trees do not depend on the number of threads.
+  static constexpr int kRound = 8;
+
+  std::size_t nodes() const { return trees_[0].size() + trees_[1].size(); }
+  std::uint64_t samples() const { return sample_index_; }
+
+  /// The configuration of sample `i` (≥ 1): the reference point uniform in the bounds, the
+  /// rotation uniform over SO(3) (Shoemake's map), uniform in the rotation limits about the
+  /// start's rotation, or the start's rotation when the problem fixes it.
+  Pose sample(std::uint64_t i) const;
+
+  /// Index of the node of `tree` nearest to `pose` in the motion metric (ties: the lowest index).
+  std::int32_t nearest(const std::vector<TreeNode>& tree, const Pose& pose) const;
+
+ private:
+  struct Step;
+  struct Attempt;
+  TreeNode make_node(const Pose& pose, double distance, std::int32_t parent) const;
+  /// One step from `from` toward `target`: the new node (parent unset), or nullopt when even the
+  /// shortest step is blocked. `reached` is set when the node is `target` itself.
+  std::optional<TreeNode> step_toward(const TreeNode& from, const Pose& target, bool& reached) const;
+  /// Extends from `from` (index `parent`) toward `target`: one step, or after a blocked step
+  /// slides along the obstacles (retraction: the motion's component into the nearest obstacle
+  /// taken out). Appends the new nodes to `chain` (parents encoded as in Attempt); false when
+  /// none. `reached`: the target itself was reached (or `from` is at it).
+  bool extend(const TreeNode& from, std::int32_t parent, const Pose& target, std::vector<TreeNode>& chain,
+              bool& reached, std::size_t& edges) const;
+  /// One slide from `from` toward `target` along the nearest obstacle, certified.
+  std::optional<TreeNode> slide(const TreeNode& from, const Pose& target) const;
+  Attempt attempt(int grow, const Pose& target) const;
+  /// Appends an attempt's chain to `tree`; the index of its last node.
+  static std::int32_t append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain);
+  bool inside(const Pose& pose) const;
+  std::vector<Pose> path_through(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const;
+
+  PlanContext& context_;
+  bool region_ = false;  ///< the goal is a region: the goal tree's roots are samples in it
+  Mat3 start_rotation_ = Mat3::Identity();   ///< the problem's (rotation limits are about it)
+  Vec3 start_rotation_vector_ = Vec3::Zero(); ///< of the search start relative to it
+  double step_ = 1.0;       ///< longest step beyond a node's free ball
+  double min_step_ = 1e-3;  ///< shortest step tried
+  std::array<std::vector<TreeNode>, 2> trees_;
+  std::uint64_t sample_index_ = 0;
+};
+
+}  // namespace swept::detail

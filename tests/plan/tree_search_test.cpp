@@ -1,0 +1,180 @@
+// The trees from both ends (src/plan/tree_search.cpp), run on their own.
+#include "plan/phase_support.h"
+#include "plan/tree_search.h"
+
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace swept {
+namespace {
+
+using namespace swept::test;
+using scenes::add_box;
+using scenes::GeneratedProblem;
+
+// A closed cage [−10, 10]³ with walls 1 thick and one way out: a square hole of side `hole`
+// in the +x wall, continued inward by a tube `tube` long. The body is a rod 5 × 1 × 1 that
+// starts off the hole's axis, turned 1.2 rad about z; the goal is outside, beyond the hole.
+// The only way out is through the tube with the rod turned along x (tilted by at most
+// atan((hole − 1) / (tube + 1)) from it), so straight moves are blocked and the grid's
+// coarse levels are too coarse to thread the tube.
+GeneratedProblem rod_in_cage(double hole, double tube) {
+  GeneratedProblem g;
+  g.name = "rod_in_cage";
+  auto& o = g.obstacles.triangles;
+  const double a = 10, t = 1, s = hole / 2;
+  add_box(o, Vec3(-a, -a, -a), Vec3(a, a, -a + t));
+  add_box(o, Vec3(-a, -a, a - t), Vec3(a, a, a));
+  add_box(o, Vec3(-a, -a, -a + t), Vec3(-a + t, a, a - t));
+  add_box(o, Vec3(-a + t, -a, -a + t), Vec3(a - t, -a + t, a - t));
+  add_box(o, Vec3(-a + t, a - t, -a + t), Vec3(a - t, a, a - t));
+  const double x0 = a - t, x1 = a;
+  add_box(o, Vec3(x0, -a, -a + t), Vec3(x1, -s, a - t));
+  add_box(o, Vec3(x0, s, -a + t), Vec3(x1, a, a - t));
+  add_box(o, Vec3(x0, -s, -a + t), Vec3(x1, s, -s));
+  add_box(o, Vec3(x0, -s, s), Vec3(x1, s, a - t));
+  if (tube > 0) {
+    add_box(o, Vec3(x0 - tube, -s - t, -s - t), Vec3(x0, -s, s + t));
+    add_box(o, Vec3(x0 - tube, s, -s - t), Vec3(x0, s + t, s + t));
+    add_box(o, Vec3(x0 - tube, -s, -s - t), Vec3(x0, s, -s));
+    add_box(o, Vec3(x0 - tube, -s, s), Vec3(x0, s, s + t));
+  }
+  add_box(g.body.triangles, Vec3(-2.5, -0.5, -0.5), Vec3(2.5, 0.5, 0.5));
+  g.problem.start = {Eigen::AngleAxisd(1.2, Vec3::UnitZ()).toRotationMatrix(), Vec3(-5, 6, 6)};
+  g.problem.goal = Pose::from_translation(Vec3(15, 0, 0));
+  g.problem.clearance = 0.01;
+  g.problem.rotation = RotationMode::free;
+  return g;
+}
+
+TEST(TreeSearch, HaltonIsTheRadicalInverse) {
+  // Base 2: 1/2, 1/4, 3/4, 1/8; base 3: 1/3, 2/3, 1/9, 4/9; base 13 at 14 = 1·13 + 1: 1/13 + 1/169.
+  const double b2[] = {0.5, 0.25, 0.75, 0.125};
+  const double b3[] = {1.0 / 3, 2.0 / 3, 1.0 / 9, 4.0 / 9};
+  for (int i = 1; i <= 4; ++i) {
+    const auto p = detail::Halton::point(static_cast<std::uint64_t>(i));
+    EXPECT_DOUBLE_EQ(p[0], b2[i - 1]);
+    EXPECT_DOUBLE_EQ(p[1], b3[i - 1]);
+  }
+  EXPECT_DOUBLE_EQ(detail::Halton::point(14)[5], 1.0 / 13 + 1.0 / 169);
+  EXPECT_DOUBLE_EQ(detail::Halton::point(5)[2], 1.0 / 25);
+}
+
+TEST(TreeSearch, SamplesStayInTheSpace) {
+  auto g = rod_in_cage(2.3, 6.0);
+  g.problem.rotation = RotationMode::limits;
+  g.problem.rotation_limits = {{{-0.1, 0.2}, {-0.3, 0.0}, {0.5, 0.6}}};
+  PhaseRig rig(std::move(g));
+  const Pose start = rig.problem().start;
+  detail::TreeSearch search(rig.context, start, rig.start_distance(start), 1.0);
+  for (std::uint64_t i = 1; i <= 500; ++i) {
+    const Pose q = search.sample(i);
+    ASSERT_TRUE(in_bounds(rig.space, q.apply(rig.space.reference))) << i;
+    ASSERT_NEAR((q.rotation.transpose() * q.rotation - Mat3::Identity()).norm(), 0.0, 1e-12);
+    // The rotation vector relative to the start's rotation, within the limits.
+    const Eigen::AngleAxisd turn(q.rotation * start.rotation.transpose());
+    const Vec3 w = turn.angle() * turn.axis();
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(w[k], rig.problem().rotation_limits[k][0] - 1e-9) << i;
+      EXPECT_LE(w[k], rig.problem().rotation_limits[k][1] + 1e-9) << i;
+    }
+  }
+}
+
+TEST(TreeSearch, FreeRotationsCoverSO3) {
+  // Shoemake's map of a low-dispersion sequence: the rotation angles follow the Haar measure,
+  // whose share of angles below π/2 is (π/2 − sin(π/2)) / π ≈ 0.182.
+  PhaseRig rig(rod_in_cage(2.3, 6.0));
+  const Pose start = rig.problem().start;
+  detail::TreeSearch search(rig.context, start, rig.start_distance(start), 1.0);
+  int small = 0;
+  const int n = 4000;
+  for (int i = 1; i <= n; ++i) small += rotation_angle(search.sample(i).rotation, Mat3::Identity()) < std::numbers::pi / 2;
+  EXPECT_NEAR(static_cast<double>(small) / n, (std::numbers::pi / 2 - 1.0) / std::numbers::pi, 0.01);
+}
+
+TEST(TreeSearch, NearestIsTheClosestInTheMetricLowestIndexFirst) {
+  PhaseRig rig(rod_in_cage(2.3, 6.0));
+  const Pose start = rig.problem().start;
+  const detail::TreeSearch search(rig.context, start, rig.start_distance(start), 1.0);
+  const double r = rig.space.radius;
+  // Poses by their reference point (world) and rotation.
+  auto at = [&](const Mat3& rotation, double x) { return rig.context.pose_with_reference_at(rotation, Vec3(x, 0, 0)); };
+  auto node = [&](const Pose& p) { return detail::TreeNode{p, p.apply(rig.space.reference), p.quaternion(), 1.0, -1}; };
+  const Mat3 turn = Eigen::AngleAxisd(0.5, Vec3::UnitX()).toRotationMatrix();
+  const Pose query = at(Mat3::Identity(), 1.0);
+  // From the query the turned node is 0.5·r away (an angle of 0.5), the others 0.5·r − 0.1 and 0.5·r.
+  std::vector<detail::TreeNode> tree{node(at(Mat3::Identity(), 0.9 + 0.5 * r)), node(at(turn, 1.0)),
+                                     node(at(Mat3::Identity(), 1.0 - 0.5 * r))};
+  EXPECT_EQ(search.nearest(tree, query), 0);
+  tree[0] = node(at(Mat3::Identity(), 1.0 + 0.75 * r));
+  tree[2] = node(at(Mat3::Identity(), 1.0 - 0.25 * r));
+  EXPECT_EQ(search.nearest(tree, query), 2);
+  tree[1] = tree[2];
+  EXPECT_EQ(search.nearest(tree, query), 1);  // equal nodes: the lower index
+}
+
+TEST(TreeSearch, ThreadsTheTubeOutOfTheCage) {
+  PhaseRig rig(rod_in_cage(2.3, 2.0), 120.0);
+  const Pose start = rig.problem().start;
+  rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
+  const double goal_distance = rig.start_distance(*rig.problem().goal);
+  detail::TreeSearch search(rig.context, start, rig.start_distance(start), goal_distance);
+  detail::TreeOutcome outcome = detail::TreeOutcome::time_limit;
+  const auto path = search.run(outcome);
+  ASSERT_TRUE(path) << "no path: " << search.nodes() << " nodes";
+  EXPECT_EQ(outcome, detail::TreeOutcome::found);
+  EXPECT_TRUE(path->front().translation == start.translation && path->front().rotation == start.rotation);
+  EXPECT_TRUE(path->back().translation == rig.problem().goal->translation);
+  // Somewhere in the tube (x in [3, 10]) the rod lies along x, within the tilt the tube allows.
+  bool threaded = false;
+  for (const Pose& q : *path) {
+    const double along = std::abs((q.rotation * Vec3::UnitX()).x());
+    threaded = threaded || (q.translation.x() > 3 && q.translation.x() < 10 && along > std::cos(0.5));
+  }
+  EXPECT_TRUE(threaded);
+  check_path_independently(rig.scene, rig.problem(), Path{*path});
+}
+
+TEST(TreeSearch, SameTreesAtAnyThreadCount) {
+  std::vector<std::size_t> nodes;
+  std::vector<std::uint64_t> hashes;
+  for (int threads : {1, 2, 3}) {
+    PhaseRig rig(rod_in_cage(2.3, 2.0), 120.0);
+    const Pose start = rig.problem().start;
+    detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
+    detail::TreeOutcome outcome = detail::TreeOutcome::time_limit;
+    tbb::task_arena arena(threads);
+    // A fixed number of rounds, found or not: the trees must match, not only the path.
+    const auto path = arena.execute([&] { return search.run(outcome, 40); });
+    nodes.push_back(search.nodes());
+    hashes.push_back(path ? path_hash(Path{*path}) : 0);
+  }
+  EXPECT_EQ(nodes[0], nodes[1]);
+  EXPECT_EQ(nodes[0], nodes[2]);
+  EXPECT_EQ(hashes[0], hashes[1]);
+  EXPECT_EQ(hashes[0], hashes[2]);
+  EXPECT_GT(nodes[0], 2u);
+}
+
+TEST(TreeSearch, GoalRegionTreeGrowsFromSamplesInTheRegion) {
+  // The cage without its tube, with a goal region (outside the obstacles' box): the goal tree's
+  // roots are free samples in the region.
+  auto g = rod_in_cage(2.3, 0.0);
+  g.problem.goal.reset();
+  g.problem.goal_outside = true;
+  PhaseRig rig(std::move(g), 120.0);
+  const Pose start = rig.problem().start;
+  detail::TreeSearch search(rig.context, start, rig.start_distance(start), 0.0);
+  detail::TreeOutcome outcome = detail::TreeOutcome::time_limit;
+  const auto path = search.run(outcome);
+  ASSERT_TRUE(path);
+  EXPECT_TRUE(goal_reached(rig.space, rig.problem(), path->back()));
+  EXPECT_FALSE(goal_reached(rig.space, rig.problem(), path->front()));
+  check_path_independently(rig.scene, rig.problem(), Path{*path});
+}
+
+}  // namespace
+}  // namespace swept
