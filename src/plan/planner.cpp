@@ -1,11 +1,14 @@
 // The planner's driver (SPEC §4; docs/planner.md): checks the problem against its search space,
 // escapes from a start in contact, then runs the phases in order — straight moves, lazy A* on
-// the multi-resolution grid (Bohlin & Kavraki 2000; Bohlin 2001), shortcut smoothing — every
+// the multi-resolution grid (Bohlin & Kavraki 2000; Bohlin 2001) with a budget, trees from both
+// ends on a Halton sequence (Kuffner & LaValle 2000; Janson, Ichter & Pavone 2018), shortcut
+// smoothing — every
 // motion certified (Schwarzer, Saha & Latombe 2005), and ends with the final certification of
 // the whole path (check_path.cpp). Each phase is its own file; this one only sequences them.
 //
 // Determinism: no randomness, no clocks or addresses in decisions, ordered containers where
-// order matters; the work done in parallel (the final certification) is consumed in path order.
+// order matters; the work done in parallel (the trees' rounds, the final certification) is
+// consumed in a fixed order.
 #include "swept/plan/planner.h"
 
 #include "checker.h"
@@ -34,9 +37,10 @@ using detail::Clock;
 using detail::PlanContext;
 
 // Expansions the grid's levels may spend without running out of nodes before the trees take
-// over. The axis-aligned narrow passages it is good at are solved well within it (the box
-// problems at levels 0–2); a budget of 60000 left the trees 1.2–2.8 s later on traps.
-constexpr std::size_t kGridBudget = 10000;
+// over. The axis-aligned narrow passages it is good at are solved within it (the box problems
+// and the hooks at levels 0–1); budgets of 10000 and 60000 held the trees back by 1.2–2.8 s
+// on the house, the cubicles and the traps (docs/planner.md).
+constexpr std::size_t kGridBudget = 2000;
 
 // Coordinates far beyond the scene lose the precision the distance bounds rely on (a query at
 // 1e100 visits every pair and takes seconds, so no time limit holds): the bounds, the start,

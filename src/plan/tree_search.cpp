@@ -39,6 +39,23 @@ constexpr std::size_t kGoalRoots = 16;
 
 }  // namespace
 
+Mat3 lattice_rotation(std::uint64_t k) {
+  // The 24 rotations that map the axes onto the axes: a signed permutation of determinant +1.
+  static const std::array<Mat3, 24> kCube = [] {
+    std::array<Mat3, 24> out;
+    const std::array<std::array<int, 3>, 6> perms{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+    std::size_t n = 0;
+    for (std::size_t p = 0; p < perms.size(); ++p)
+      for (int signs = 0; signs < 8; ++signs) {
+        Mat3 m = Mat3::Zero();
+        for (int row = 0; row < 3; ++row) m(row, perms[p][row]) = (signs >> row) & 1 ? -1.0 : 1.0;
+        if (m.determinant() > 0) out[n++] = m;
+      }
+    return out;
+  }();
+  return kCube[k % 24];
+}
+
 std::array<double, 6> Halton::point(std::uint64_t i) {
   static constexpr std::array<std::uint64_t, 6> kBases{2, 3, 5, 7, 11, 13};
   std::array<double, 6> out{};
@@ -56,6 +73,7 @@ struct TreeSearch::Attempt {
   bool connected = false;         ///< the chain reached the new node, or the new node is in the goal region
   std::int32_t meet = -1;         ///< connected with an empty chain: the other tree's node at the new node
   std::optional<TreeNode> root;   ///< a goal region's sample, free: a new root of the goal tree
+  bool in_region = false;         ///< a new node of the start's tree is in the goal region
   std::size_t edges = 0;          ///< motions certified
 };
 
@@ -65,6 +83,7 @@ TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_dis
   const SearchSpace& space = context.space;
   region_ = problem.goal_outside || !problem.goal;
   start_rotation_ = problem.start.rotation;
+  goal_rotation_ = problem.goal ? problem.goal->rotation : start.rotation;
   start_rotation_vector_ = rotation_vector(start.rotation * problem.start.rotation.transpose());
   const double size = context.scene_size();
   step_ = 0.1 * (space.bounds.max - space.bounds.min).norm();
@@ -86,6 +105,13 @@ Pose TreeSearch::sample(std::uint64_t i) const {
   switch (context_.space.rotation) {
     case RotationMode::none: break;
     case RotationMode::free: {
+      if (i % 4 == 3) {  // every fourth sample: a quarter-turn lattice orientation
+        // Lattice samples alternate a move and a turn (i / 4 % 2): each turn sees all 24 of the
+        // start's orientations, then all 24 of the goal's.
+        const std::uint64_t k = i / 8;
+        rotation = lattice_rotation(k) * ((k / 24) % 2 == 0 ? start_rotation_ : goal_rotation_);
+        break;
+      }
       const double a = std::sqrt(1.0 - u[3]), b = std::sqrt(u[3]);
       const double s = 2 * std::numbers::pi * u[4], t = 2 * std::numbers::pi * u[5];
       rotation = Quat(b * std::cos(t), a * std::sin(s), a * std::cos(s), b * std::sin(t)).normalized().toRotationMatrix();
@@ -100,6 +126,16 @@ Pose TreeSearch::sample(std::uint64_t i) const {
     }
   }
   return context_.pose_with_reference_at(rotation, point);
+}
+
+Pose TreeSearch::lattice_move(const TreeNode& from, const Pose& target, bool turn) const {
+  if (turn && context_.space.rotation != RotationMode::none) return context_.pose_with_reference_at(target.rotation, from.point);
+  const Vec3 d = context_.reference_at(target) - from.point;
+  int axis = 0;
+  d.cwiseAbs().maxCoeff(&axis);
+  Vec3 p = from.point;
+  p[axis] += d[axis];
+  return context_.pose_with_reference_at(from.pose.rotation, p);
 }
 
 bool TreeSearch::inside(const Pose& pose) const {
@@ -239,7 +275,7 @@ std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& targ
   return std::nullopt;
 }
 
-TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target) const {
+TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint64_t index) const {
   Attempt out;
   // A goal region's tree grows from free samples in the region, the first kGoalRoots of them.
   if (region_ && trees_[1].size() < kGoalRoots && goal_reached(context_.space, context_.problem, target)) {
@@ -250,15 +286,59 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target) const {
   const std::vector<TreeNode>& mine = trees_[grow];
   const std::int32_t from = nearest(mine, target);
   bool reached = false;
-  if (!extend(mine[from], from, target, out.grown, reached, out.edges)) return out;
+  // Every fourth sample moves along one axis or turns in place (`lattice_move`).
+  const Pose aim = index % 4 == 3 ? lattice_move(mine[from], target, index / 4 % 2 == 1) : target;
+  if (!extend(mine[from], from, aim, out.grown, reached, out.edges)) return out;
+  reach_for(grow, out);
+  return out;
+}
+
+TreeSearch::Attempt TreeSearch::seed_attempt(int grow, int orientation, int axis) const {
+  // From the root: turn in place to a lattice orientation of the root's, then pull along a
+  // world axis toward the bounds, step after step (no slides: the move stays on its line).
+  Attempt out;
+  const TreeNode& root = trees_[grow].front();
+  const Pose turned = context_.pose_with_reference_at(lattice_rotation(static_cast<std::uint64_t>(orientation)) * root.pose.rotation, root.point);
+  Vec3 u = Vec3::Zero();
+  u[axis / 2] = axis % 2 == 0 ? 1.0 : -1.0;
+  const Aabb& bounds = context_.space.bounds;
+  const double room = u[axis / 2] > 0 ? bounds.max[axis / 2] - root.point[axis / 2] : root.point[axis / 2] - bounds.min[axis / 2];
+  const Pose pulled = context_.pose_with_reference_at(turned.rotation, root.point + room * u);
+  std::int32_t parent = 0;
+  TreeNode at = root;
+  const std::array<Pose, 2> legs{turned, pulled};
+  for (const Pose& leg : legs) {
+    bool done = false;
+    for (int k = 0; k < kConnectSteps && !done && !context_.out_of_time(); ++k) {
+      bool reached = false;
+      std::optional<TreeNode> next = step_toward(at, leg, reached);
+      if (!next) {
+        done = reached;
+        break;
+      }
+      ++out.edges;
+      next->parent = parent;
+      parent = -2 - static_cast<std::int32_t>(out.grown.size());
+      out.grown.push_back(*next);
+      at = *next;
+      done = reached;
+    }
+    if (!done) break;  // the turn or the pull stopped short: what grew stays
+  }
+  if (!out.grown.empty()) reach_for(grow, out);
+  return out;
+}
+
+void TreeSearch::reach_for(int grow, Attempt& out) const {
+  bool reached = false;
   const TreeNode& grown = out.grown.back();
   if (region_ && grow == 0) {
-    for (const TreeNode& n : out.grown) out.connected = out.connected || goal_reached(context_.space, context_.problem, n.pose);
-    if (out.connected) return out;
+    for (const TreeNode& n : out.grown) out.in_region = out.in_region || goal_reached(context_.space, context_.problem, n.pose);
+    if (out.in_region) return;
   }
   // The other tree reaches for the new node, step after step, until it gets there or is blocked.
   const std::vector<TreeNode>& other = trees_[1 - grow];
-  if (other.empty()) return out;
+  if (other.empty()) return;
   std::int32_t parent = nearest(other, grown.pose);
   TreeNode at = other[parent];
   for (int k = 0; k < kConnectSteps && !context_.out_of_time(); ++k) {
@@ -273,7 +353,6 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target) const {
     parent = -2 - static_cast<std::int32_t>(out.chain.size() - 1);
     at = out.chain.back();
   }
-  return out;
 }
 
 std::int32_t TreeSearch::append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain) {
@@ -319,15 +398,28 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
       context_.options.progress({kTreeLevel, nodes(), context_.check.distance_queries(), last_progress_s});
     }
     const int grow = trees_[1].empty() ? 0 : static_cast<int>(round % 2);
-    for (Pose& t : targets) t = sample(++sample_index_);
-    tbb::parallel_for(0, kRound, [&](int i) { attempts[i] = attempt(grow, targets[i]); });
+    // The first rounds are half seeds (turn and pull from a root), in a fixed order.
+    const bool rooted = grow == 0 || !region_;  // a goal region's tree has many roots: no seeds
+    const int seeds = rooted ? static_cast<int>(std::min<std::uint64_t>(kRound / 2, kSeeds - std::min(kSeeds, seed_index_[grow]))) : 0;
+    const std::uint64_t first = sample_index_ + 1;
+    for (int i = seeds; i < kRound; ++i) targets[i] = sample(++sample_index_);
+    const std::uint64_t seed_first = seed_index_[grow];
+    seed_index_[grow] += static_cast<std::uint64_t>(seeds);
+    tbb::parallel_for(0, kRound, [&](int i) {
+      if (i < seeds) {
+        const std::uint64_t k = seed_first + static_cast<std::uint64_t>(i);  // orientation, axis
+        attempts[i] = seed_attempt(grow, static_cast<int>(k / 6 % 24), static_cast<int>(k % 6));
+      } else {
+        attempts[i] = attempt(grow, targets[i], first + static_cast<std::uint64_t>(i - seeds));
+      }
+    });
     // Added in sample order: the same trees at any thread count.
     for (Attempt& a : attempts) {
       context_.edges_checked += a.edges;
       if (a.root && trees_[1].size() < kGoalRoots) trees_[1].push_back(*a.root);
       if (a.grown.empty()) continue;
       const std::int32_t grown = append(trees_[grow], a.grown);
-      if (region_ && grow == 0 && a.connected) {
+      if (a.in_region) {
         outcome = TreeOutcome::found;
         // The first of the new nodes in the goal region (each is the next one's parent) ends the path.
         std::int32_t end = grown - static_cast<std::int32_t>(a.grown.size()) + 1;

@@ -32,6 +32,9 @@ class Halton {
   static std::array<double, 6> point(std::uint64_t i);
 };
 
+/// The k-th (mod 24) of the rotations that map the coordinate axes onto themselves.
+Mat3 lattice_rotation(std::uint64_t k);
+
 /// A node of a search tree.
 struct TreeNode {
   Pose pose;
@@ -62,8 +65,11 @@ class TreeSearch {
   std::uint64_t samples() const { return sample_index_; }
 
   /// The configuration of sample `i` (≥ 1): the reference point uniform in the bounds, the
-  /// rotation uniform over SO(3) (Shoemake's map), uniform in the rotation limits about the
-  /// start's rotation, or the start's rotation when the problem fixes it.
+  /// rotation uniform over SO(3) (Shoemake's map) — except every fourth sample, whose rotation
+  /// is a quarter-turn lattice orientation (`lattice_rotation`) of the start's or the goal's
+  /// rotation, so that parts and passages aligned with each other meet aligned — uniform in the
+  /// rotation limits about the start's rotation, or the start's rotation when the problem fixes
+  /// it.
   Pose sample(std::uint64_t i) const;
 
   /// Index of the node of `tree` nearest to `pose` in the motion metric (ties: the lowest index).
@@ -84,7 +90,20 @@ class TreeSearch {
               bool& reached, std::size_t& edges) const;
   /// One slide from `from` toward `target` along the nearest obstacle, certified.
   std::optional<TreeNode> slide(const TreeNode& from, const Pose& target) const;
-  Attempt attempt(int grow, const Pose& target) const;
+  /// Grows tree `grow` toward sample `index` (`target`), and the other tree toward what grew.
+  Attempt attempt(int grow, const Pose& target, std::uint64_t index) const;
+  /// A seed of tree `grow`: from its root, a turn in place to lattice orientation
+  /// `orientation` (`lattice_rotation`) of the root's rotation, then a pull along world axis
+  /// `axis` (+x, −x, +y, −y, +z, −z) toward the bounds, as far as it is free.
+  Attempt seed_attempt(int grow, int orientation, int axis) const;
+  /// The other tree reaches for the last node `out` grew, step after step.
+  void reach_for(int grow, Attempt& out) const;
+  /// Seeds per tree with a root of its own: 24 orientations × 6 axes.
+  static constexpr std::uint64_t kSeeds = 144;
+  /// Where a lattice move from `from` toward `target` aims: the same reference point turned to
+  /// the target's rotation (`turn`), or the same rotation moved along the one world axis of the
+  /// largest displacement toward the target. Aligned parts pass aligned passages so.
+  Pose lattice_move(const TreeNode& from, const Pose& target, bool turn) const;
   /// Appends an attempt's chain to `tree`; the index of its last node.
   static std::int32_t append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain);
   bool inside(const Pose& pose) const;
@@ -93,11 +112,13 @@ class TreeSearch {
   PlanContext& context_;
   bool region_ = false;  ///< the goal is a region: the goal tree's roots are samples in it
   Mat3 start_rotation_ = Mat3::Identity();   ///< the problem's (rotation limits are about it)
+  Mat3 goal_rotation_ = Mat3::Identity();    ///< the goal pose's (else the search start's)
   Vec3 start_rotation_vector_ = Vec3::Zero(); ///< of the search start relative to it
   double step_ = 1.0;       ///< longest step beyond a node's free ball
   double min_step_ = 1e-3;  ///< shortest step tried
   std::array<std::vector<TreeNode>, 2> trees_;
   std::uint64_t sample_index_ = 0;
+  std::array<std::uint64_t, 2> seed_index_{};  ///< seeds done, per tree
 };
 
 }  // namespace swept::detail

@@ -85,14 +85,36 @@ TEST(TreeSearch, SamplesStayInTheSpace) {
 
 TEST(TreeSearch, FreeRotationsCoverSO3) {
   // Shoemake's map of a low-dispersion sequence: the rotation angles follow the Haar measure,
-  // whose share of angles below π/2 is (π/2 − sin(π/2)) / π ≈ 0.182.
+  // whose share of angles below π/2 is (π/2 − sin(π/2)) / π ≈ 0.182. Every fourth sample is a
+  // lattice orientation of the start's or the goal's rotation instead.
   PhaseRig rig(rod_in_cage(2.3, 6.0));
   const Pose start = rig.problem().start;
   detail::TreeSearch search(rig.context, start, rig.start_distance(start), 1.0);
-  int small = 0;
-  const int n = 4000;
-  for (int i = 1; i <= n; ++i) small += rotation_angle(search.sample(i).rotation, Mat3::Identity()) < std::numbers::pi / 2;
+  int small = 0, n = 0;
+  for (int i = 1; i <= 4000; ++i) {
+    const Mat3 r = search.sample(i).rotation;
+    if (i % 4 == 3) {
+      // R·R₀ᵀ maps the axes onto the axes (R₀ the start's rotation; this problem's goal is unturned).
+      const Mat3 lattice = r * (i / 8 / 24 % 2 == 0 ? start.rotation : rig.problem().goal->rotation).transpose();
+      EXPECT_NEAR((lattice.cwiseAbs() - lattice.cwiseAbs().array().round().matrix()).norm(), 0.0, 1e-12) << i;
+      continue;
+    }
+    ++n;
+    small += rotation_angle(r, Mat3::Identity()) < std::numbers::pi / 2;
+  }
   EXPECT_NEAR(static_cast<double>(small) / n, (std::numbers::pi / 2 - 1.0) / std::numbers::pi, 0.01);
+}
+
+TEST(TreeSearch, LatticeRotationsAreTheCubeGroup) {
+  std::vector<Mat3> seen;
+  for (std::uint64_t k = 0; k < 24; ++k) {
+    const Mat3 m = detail::lattice_rotation(k);
+    EXPECT_NEAR((m * m.transpose() - Mat3::Identity()).norm(), 0.0, 1e-15);
+    EXPECT_DOUBLE_EQ(m.determinant(), 1.0);
+    for (const Mat3& other : seen) EXPECT_GT((m - other).norm(), 0.5) << k;
+    seen.push_back(m);
+  }
+  EXPECT_EQ((detail::lattice_rotation(24) - detail::lattice_rotation(0)).norm(), 0.0);
 }
 
 TEST(TreeSearch, NearestIsTheClosestInTheMetricLowestIndexFirst) {

@@ -7,7 +7,9 @@
 /// about c). Every edge of a returned path is certified by the motion certificate
 /// (`certify_motion`, Schwarzer, Saha, Latombe 2005): the distance stays above the clearance
 /// margin along the whole continuous motion. The search follows Bohlin & Kavraki 2000 (lazy
-/// checking) and Bohlin 2001 (a multi-resolution grid); docs/planner.md walks through it.
+/// checking) and Bohlin 2001 (a multi-resolution grid), then grows trees from both ends on a
+/// Halton sequence (RRT-Connect's manner, with free-ball steps, slides and quarter-turn lattice
+/// moves); docs/planner.md walks through it.
 #include "swept/bvh/bvh.h"
 #include "swept/geometry/solid.h"
 #include "swept/plan/problem.h"
