@@ -2,6 +2,7 @@
 #include "swept/scenes/modeling.h"
 #include "swept/scenes/scene_model.h"
 #include "swept/scenes/scenes.h"
+#include "swept/scenes/planning_suite.h"
 #include "swept/scenes/problem_toml.h"
 #include "swept/io/file_write.h"
 #include "swept/io/mesh_io.h"
@@ -158,6 +159,7 @@ Result<SceneReport> generate_scene(const GenerateRequest& request) {
   if (info == cat.end()) {
     std::string names;
     for (const SceneInfo& s : cat) names.append(names.empty() ? "" : ", ").append(s.name);
+    for (const SuiteInfo& s : suite_catalog()) names.append(", ").append(s.name);
     return Error{"unknown scene '" + request.name + "' (known: " + names + ")"};
   }
   std::error_code ec;
