@@ -82,6 +82,11 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
     row.main_ms.push_back(again.plan_ms);
     row.deterministic = row.deterministic && same(again.result);
   }
+  if (first.solved()) {  // as `swept check` would: the path against the problem, apart from the planner
+    const PathCheckResult check = check_path(c.problem, *main_scene, first.path);
+    row.path_checked = check.valid;
+    std::fprintf(stderr, "  swept path check: %s\n", check.message.c_str());
+  }
   if (o.thread_check && threads != 1 && first.solved()) {
     const SweptRun one = run_swept(c, *main_scene, c.problem.build.fitter, limit, 1);
     row.one_thread_status = one.result.status;

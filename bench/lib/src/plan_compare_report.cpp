@@ -52,7 +52,7 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
   std::printf("\nswept per fitter (plan ms of the first run without the tree build; build ms; status) and determinism\n");
   std::printf("%-18s", "problem");
   for (const FitterInfo& f : all_fitters()) std::printf(" %28s", std::string(f.name).c_str());
-  std::printf("  %s\n", "same hash every run (and at 1 thread)");
+  std::printf("  %s\n", "same hash every run (and at 1 thread); check_path of the path");
   for (const CompareRow& r : rows) {
     if (!r.error.empty()) continue;
     std::printf("%-18s", r.name.c_str());
@@ -65,7 +65,8 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(r.main().result.path_hash));
     const char* one = !r.one_thread_status ? "" : r.one_thread_same() ? ", 1 thread: yes" : ", 1 thread: NO";
-    std::printf("  %s (%s)%s\n", r.deterministic ? "yes" : "NO", hash, one);
+    const char* check = !r.path_checked ? "" : *r.path_checked ? "; check: valid" : "; check: NOT VALID";
+    std::printf("  %s (%s)%s%s\n", r.deterministic ? "yes" : "NO", hash, one, check);
   }
   std::fflush(stdout);
 }

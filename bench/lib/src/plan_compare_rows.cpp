@@ -117,6 +117,7 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
     }
     p["swept_deterministic"] = r.deterministic;
     p["swept_time_limit_s"] = r.swept_time_limit;
+    if (r.path_checked) p["swept_path_checked"] = *r.path_checked;
     if (r.one_thread_status) {
       char one[32];
       std::snprintf(one, sizeof one, "%016llx", static_cast<unsigned long long>(r.one_thread_hash));
@@ -179,6 +180,7 @@ std::vector<CompareRow> rows_from_json(const nlohmann::json& j) {
     }
     r.deterministic = p.value("swept_deterministic", false);
     r.swept_time_limit = p.value("swept_time_limit_s", j.value("time_limit_s", 0.0));
+    if (p.contains("swept_path_checked")) r.path_checked = p["swept_path_checked"].get<bool>();
     if (p.contains("swept_one_thread")) {
       const auto& one = p["swept_one_thread"];
       r.one_thread_status = status_named(one.value("status", "")).value_or(PlanStatus::no_path_resolution);

@@ -9,6 +9,7 @@
 /// twice): its median time is the one compared, and every run must give the same path.
 /// OMPL's side: see ompl_peer.h.
 #include "swept/plan/planner.h"
+#include "swept/plan/check.h"
 #include "swept/plan/problem.h"
 
 #include <nlohmann/json.hpp>
@@ -75,6 +76,9 @@ struct CompareRow {
   std::optional<PlanStatus> one_thread_status;
   std::uint64_t one_thread_hash = 0;
   double one_thread_ms = 0.0;
+  /// The main run's path re-certified by check_path (what `swept check` runs), with the
+  /// problem's clearance, apart from the planner; unset when it found no path.
+  std::optional<bool> path_checked;
   std::vector<OmplRun> ompl;
   double ompl_fcl_build_ms = 0.0;
   std::string error;  ///< set when the problem could not be loaded
