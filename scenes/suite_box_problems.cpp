@@ -3,6 +3,8 @@
 // numbers; the comments state them.
 #include "swept/scenes/planning_suite.h"
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 
@@ -102,15 +104,23 @@ SuiteProblem bug_trap() {
 
 SuiteProblem hooks(double gap_ratio) {
   // Two C-shaped hooks of square bar t = 2, linked like chain links. The fixed hook lies in
-  // y ∈ [−1, 1]: a 20 × 20 frame (x, z ∈ [−10, 10]) whose top bar has a gap |x| < g/2. The
-  // moving hook lies in x ∈ [−1, 1]: a 16 × 22 frame (y ∈ [−8, 8], z ∈ [0, 22]) with a gap
-  // |y| < g/2 in its top bar; its bottom bar runs along y through the fixed hook's window, and
-  // the fixed hook's top bar (z ∈ [8, 10]) runs through the moving hook's window (z ∈ [2, 20]).
-  // They come apart when the moving hook's bottom bar (2 wide in x) rises through the fixed
-  // hook's gap: (g − 2)/2 of play on each side, and a tilt of the 16-long bar of more than about
-  // (g − 2)/16 rad jams it. The moving hook's own gap is no way out: for the fixed top bar to
-  // reach it the moving bottom bar would have to sink 12, and it has 8 of room.
+  // y ∈ [−1, 1]: a 20 × 20 frame (x, z ∈ [−10, 10]) whose top bar (z ∈ [8, 10]) is cut by a
+  // slanted slit of width g: |x cos 30° + y sin 30°| < g/2, vertical walls at 30° to the bar's
+  // cross-section. The moving hook lies in x ∈ [−1, 1]: a 16 × 22 frame (y ∈ [−8, 8],
+  // z ∈ [0, 22]) with a gap |y| < g/2 in its top bar; its bottom bar runs along y through the
+  // fixed hook's window, and the fixed hook's top bar runs through the moving hook's window
+  // (z ∈ [2, 20]). They come apart when the moving hook, turned 30° about z to line its bottom
+  // bar (2 wide) up with the slit, rises through it: (g − 2)/2 of play on each side, and a turn
+  // or tilt of the 16-long bar off the slit's direction by more than about (g − 2)/16 rad jams it.
+  // Unturned, the bar fits only when (g/2 − sin 30°)/cos 30° > 1, i.e. g/2 > 1.37: in hooks-1.5,
+  // with 0.155 of play instead of 0.5.
+  // Turning in place is free: the moving hook's side bars stay at |y| ≥ 5.9, the fixed hook's
+  // top bar keeps |x_B| ≥ g/2 > 1 off the moving hook's plane where they could meet.
+  // The moving hook's own gap is no way out: for the fixed top bar to reach it the moving bottom
+  // bar would have to sink 12, and it has 8 of room.
   const double g = 2.0 * gap_ratio, h = g / 2;
+  constexpr double kSlit = 30.0;
+  const double c = std::cos(kSlit * kPi / 180), sn = std::sin(kSlit * kPi / 180);
   char name[32];
   std::snprintf(name, sizeof name, "hooks-%.1f", gap_ratio);
   SuiteProblem s = make(name, 0.02, Aabb{Vec3(-25, -25, -15), Vec3(25, 25, 45)});
@@ -118,19 +128,34 @@ SuiteProblem hooks(double gap_ratio) {
   box(o, -10, -1, -10, -8, 1, 10);
   box(o, 8, -1, -10, 10, 1, 10);
   box(o, -8, -1, -10, 8, 1, -8);
-  box(o, -8, -1, 8, -h, 1, 10);
-  box(o, h, -1, 8, 8, 1, 10);
+  // The top bar's two halves, x from −8 to the slit's wall x = (−h − y sin)/cos and from the
+  // other wall x = (h − y sin)/cos to 8: hexahedra with one slanted side.
+  for (const double side : {-1.0, 1.0}) {
+    std::array<Vec3, 8> corners;
+    for (int i = 0; i < 8; ++i) {
+      const double y = i & 2 ? 1.0 : -1.0, z = i & 4 ? 10.0 : 8.0;
+      const double wall = (side * h - y * sn) / c;
+      const bool high_x = i & 1;
+      const double x = side < 0 ? (high_x ? wall : -8.0) : (high_x ? 8.0 : wall);
+      corners[static_cast<std::size_t>(i)] = Vec3(x, y, z);
+    }
+    add_hexahedron(o, corners);
+  }
   auto& b = s.problem.body.triangles;
   box(b, -1, -8, 0, 1, -6, 22);
   box(b, -1, 6, 0, 1, 8, 22);
   box(b, -1, -6, 0, 1, 6, 2);
   box(b, -1, -6, 20, 1, -h, 22);
   box(b, -1, h, 20, 1, 6, 22);
-  // Up 14 the bottom bar is at z ∈ [14, 16], above the fixed hook (z ≤ 10): free to turn.
-  s.witness = {at(0, 0, 0), at(0, 0, 14), turned(Vec3::UnitZ(), 90, 0, 0, 14)};
+  // Turned 30° about the vertical axis through the design origin (the witness turns about the
+  // reference point, the vertex mean, which is on that axis); up 14 the bottom bar is at
+  // z ∈ [14, 16], above the fixed hook (z ≤ 10): free to turn on to 90°.
+  s.witness = {at(0, 0, 0), turned(Vec3::UnitZ(), kSlit, 0, 0, 0), turned(Vec3::UnitZ(), kSlit, 0, 0, 14),
+               turned(Vec3::UnitZ(), 90, 0, 0, 14)};
   s.passage_width = g;
   s.body_width = 2.0;
-  s.passage = "the fixed hook's gap, " + std::string(name + 6) + " x the 2-thick bar";
+  s.passage = "the fixed hook's slanted slit, " + std::string(name + 6) +
+              " x the 2-thick bar, which must turn 30 deg to line up with it";
   finish(s);
   return s;
 }

@@ -11,11 +11,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <numbers>
 #include <span>
 #include <stdexcept>
 #include <unistd.h>
@@ -265,15 +267,25 @@ TEST(Suite, TrapExitIsTwoWide) {
             0.0);
 }
 
-// The hooks' play is (gap − bar)/2: centred in the gap the bar is that far from the fixed hook.
+// The hooks' play is (gap − bar)/2: turned 30° and centred in the slanted slit the bar is that
+// far from the fixed hook; unturned it jams in the two tighter ones (hooks-1.5 lets it through
+// with less play: (g/2 − sin 30°)/cos 30° − 1 = 0.155).
 TEST(Suite, HookGapsGiveTheStatedPlay) {
+  constexpr double kTurn = 30.0 * std::numbers::pi / 180;
   for (const auto& [name, play] : {std::pair{"hooks-1.5", 0.5}, std::pair{"hooks-1.2", 0.2}, std::pair{"hooks-1.1", 0.1}}) {
     const Written& w = written(name);
     const auto obstacles = oracle_tris(w.problem.problem.obstacles.triangles);
-    // Raised 8, the moving hook's bottom bar (z ∈ [8, 10]) is in the gap.
-    const double d = oracle::exact_distance(obstacles, oracle_tris(w.problem.problem.body.triangles,
-                                                                   Pose::from_translation(Vec3(0, 0, 8))));
+    const auto& body = w.problem.problem.body.triangles;
+    // Raised 8, the moving hook's bottom bar (z ∈ [8, 10]) is in the slit.
+    const double d = oracle::exact_distance(obstacles, oracle_tris(body, Pose::from_axis_angle(Vec3::UnitZ(), kTurn, Vec3(0, 0, 8))));
     EXPECT_NEAR(d, play, 1e-9) << name;
+    const double unturned = oracle::exact_distance(obstacles, oracle_tris(body, Pose::from_translation(Vec3(0, 0, 8))));
+    if (play < 0.5) {
+      EXPECT_EQ(unturned, 0.0) << name;
+    } else {
+      // The bar's corner (1, 1) to the slit's wall where it meets the slab's face y = 1.
+      EXPECT_NEAR(unturned, (1.5 - std::sin(kTurn)) / std::cos(kTurn) - 1.0, 1e-9) << name;
+    }
   }
 }
 
