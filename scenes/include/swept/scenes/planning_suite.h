@@ -57,7 +57,7 @@ struct SuiteFiles {
   /// OMPL.app's robot centre of body.stl (ompl_app_center), in the design frame: the origin of
   /// the written problem's body frame and its reference point.
   Vec3 body_center = Vec3::Zero();
-  Problem problem;            ///< the problem as written (body frame: the centred one)
+  Problem problem;            ///< the problem as written (mesh files relative to `dir`; body frame: the centred one)
   std::vector<Pose> witness_poses;  ///< the witness in the written body frame
   std::size_t body_triangles = 0, obstacle_triangles = 0;
 };
