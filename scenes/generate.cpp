@@ -159,8 +159,12 @@ Result<SceneReport> generate_scene(const GenerateRequest& request) {
   if (info == cat.end()) {
     std::string names;
     for (const SceneInfo& s : cat) names.append(names.empty() ? "" : ", ").append(s.name);
-    for (const SuiteInfo& s : suite_catalog()) names.append(", ").append(s.name);
-    return Error{"unknown scene '" + request.name + "' (known: " + names + ")"};
+    if (is_suite_problem(request.name))
+      return Error{"'" + request.name + "' is a planner benchmark problem, not a CAD scene: write it with "
+                   "write_suite_problem(suite_problem(name), dir), as `swept scene` does"};
+    std::string suite;
+    for (const SuiteInfo& s : suite_catalog()) suite.append(suite.empty() ? "" : ", ").append(s.name);
+    return Error{"unknown scene '" + request.name + "' (known: " + names + "; planner benchmark problems: " + suite + ")"};
   }
   std::error_code ec;
   std::filesystem::create_directories(request.output_dir, ec);

@@ -8,6 +8,7 @@
 #include "swept/io/mesh_io.h"
 #include "swept/plan/check.h"
 #include "swept/scenes/planning_suite.h"
+#include "swept/scenes/scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -250,6 +251,15 @@ TEST(Suite, CatalogueMatchesTheProblems) {
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().message.find("bug-trap"), std::string::npos);
   EXPECT_FALSE(scenes::is_suite_problem("air-cleaner"));
+  // The CAD scenes' generator names the suite in its errors and points a suite name to its writer.
+  const fs::path dir = temp_dir("not_cad");
+  auto unknown = scenes::generate_scene({.name = "no-such-problem", .output_dir = dir});
+  ASSERT_FALSE(unknown);
+  EXPECT_NE(unknown.error().message.find("hooks-1.1"), std::string::npos);
+  auto suite = scenes::generate_scene({.name = "house", .output_dir = dir});
+  ASSERT_FALSE(suite);
+  EXPECT_NE(suite.error().message.find("write_suite_problem"), std::string::npos);
+  fs::remove_all(dir);
 }
 
 // The trap's exit is as narrow as stated: a 2 × 2 channel for the 1.6 × 1.6 rod, 0.2 of play a
