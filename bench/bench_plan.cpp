@@ -4,15 +4,21 @@
 // sides, ompl_peer.h for OMPL's set-up); this program picks the problems and prints.
 //
 //   bench_plan [--quick] [--time-limit S] [--seeds N] [--threads N] [--only a,b,...] [--no-cad]
+//              [--suite classic|ompl|all] [--swept-time-limit S] [--thread-check]
 //              [--ompl-collide-only] [--json FILE]
 //
-// Problems: the box problems of the scenes library (peg_in_hole, t_slot, l_tunnel,
-// bar_through_slot, enclosed) and the CAD scenes of `swept scene` at test scale (generated into
-// a temporary directory; skipped with a message when generation fails).
+// Problems (--suite classic, the default): the box problems of the scenes library (peg_in_hole,
+// t_slot, l_tunnel, bar_through_slot, enclosed) and the CAD scenes of `swept scene` at test
+// scale (generated into a temporary directory; skipped with a message when generation fails).
+// --suite ompl: the planner benchmark suite of issue 13 (swept/scenes/planning_suite.h, the
+// counterparts of OMPL.app's problems), written by `swept scene`'s writer and read back from
+// their problem.toml; swept gets --swept-time-limit (default 300 s) on the hard ones (trap,
+// hooks), OMPL keeps --time-limit. --suite all: both.
 #include "swept/bench/plan_compare.h"
 #include "swept/bench/timing.h"
 #include "swept/io/file_write.h"
 #include "swept/scenes/box_problems.h"
+#include "swept/scenes/planning_suite.h"
 #include "swept/scenes/scenes.h"
 
 #include <ompl/util/Console.h>
@@ -36,11 +42,16 @@ using namespace swept::bench;
 [[noreturn]] void usage(const std::string& why) {
   std::cerr << "bench_plan: " << why << "\n"
             << "usage: bench_plan [--quick] [--time-limit S] [--seeds N] [--threads N] [--only a,b] [--no-cad] "
-               "[--ompl-collide-only] [--json FILE]\n"
+               "[--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--ompl-collide-only] [--json FILE]\n"
             << "  --quick        10 s limit, 5 seeds (defaults: 60 s, 5 seeds)\n"
+            << "  --suite S      classic: box problems and CAD scenes (default); ompl: the OMPL.app counterparts "
+               "(twisty-slot, bug-trap, hooks-1.5, hooks-1.2, hooks-1.1, house, cubicles, spiral-tube); all: both\n"
+            << "  --swept-time-limit S  swept's limit on the suite's hard problems (bug-trap, hooks-*; default 300 s; "
+               "OMPL keeps --time-limit)\n"
+            << "  --thread-check one more swept run at 1 thread per solved problem: the path hash must not change\n"
             << "  --threads N    swept's threads (0: all cores; default 0)\n"
             << "  --only a,b     only these problems (peg_in_hole, t_slot, l_tunnel, bar_through_slot, enclosed, "
-               "air-cleaner, cylinder-head, tunnel-console)\n"
+               "air-cleaner, cylinder-head, tunnel-console, or the --suite ompl names)\n"
             << "  --no-cad       skip the CAD scenes\n"
             << "  --ompl-collide-only  OMPL's validity check without the clearance (fcl::collide only)\n"
             << "  --json FILE    also write the results as JSON\n";
@@ -56,6 +67,8 @@ int main(int argc, char** argv) {
   int& threads = o.threads;
   bool& collide_only = o.collide_only;
   bool cad = true;
+  std::string suite = "classic";
+  double swept_hard_limit = 300.0;
   std::vector<std::string> only;
   std::string json_file;
   auto number = [&](int& i, const std::string& flag) -> double {
@@ -84,6 +97,16 @@ int main(int argc, char** argv) {
       std::stringstream ss(argv[++i]);
       for (std::string n; std::getline(ss, n, ',');)
         if (!n.empty()) only.push_back(n);
+    } else if (a == "--suite") {
+      if (i + 1 >= argc) usage("--suite needs a value");
+      suite = argv[++i];
+      if (suite != "classic" && suite != "ompl" && suite != "all")
+        usage("--suite: unknown suite '" + suite + "' (classic, ompl or all)");
+    } else if (a == "--swept-time-limit") {
+      swept_hard_limit = number(i, a);
+      if (swept_hard_limit <= 0) usage("--swept-time-limit must be > 0");
+    } else if (a == "--thread-check") {
+      o.thread_check = true;
     } else if (a == "--no-cad") {
       cad = false;
     } else if (a == "--ompl-collide-only") {
@@ -100,19 +123,37 @@ int main(int argc, char** argv) {
   auto wanted = [&](const std::string& n) { return only.empty() || std::find(only.begin(), only.end(), n) != only.end(); };
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
 
+  const bool classic = suite != "ompl";
   std::vector<PlanCase> cases;
   for (auto& g : scenes::box_problems()) {
-    if (!wanted(g.name)) continue;
-    cases.push_back(PlanCase{g.name, g.problem, std::move(g.obstacles), std::move(g.body), "box"});
+    if (!classic || !wanted(g.name)) continue;
+    cases.push_back(PlanCase{g.name, g.problem, std::move(g.obstacles), std::move(g.body), "box", 0.0});
   }
   std::filesystem::path tmp;
-  if (cad) {
+  auto make_tmp = [&] {
+    if (tmp.empty()) {
+      tmp = std::filesystem::temp_directory_path() /
+            ("swept-bench-plan-" + std::to_string(static_cast<long long>(std::time(nullptr))));
+    }
+  };
+  if (suite != "classic") {
+    for (const scenes::SuiteInfo& info : scenes::suite_catalog()) {
+      if (!wanted(info.name)) continue;
+      make_tmp();
+      auto problem = scenes::suite_problem(info.name);
+      auto files = problem ? scenes::write_suite_problem(*problem, tmp / info.name) : Result<scenes::SuiteFiles>(problem.error());
+      auto loaded = files ? load_problem(files->problem_toml) : Result<Problem>(files.error());
+      if (!loaded) {
+        std::fprintf(stderr, "bench_plan: skipping %s: %s\n", info.name.c_str(), loaded.error().message.c_str());
+        continue;
+      }
+      cases.push_back(PlanCase{info.name, *loaded, std::nullopt, std::nullopt, "suite", info.hard ? swept_hard_limit : 0.0});
+    }
+  }
+  if (cad && classic) {
     for (const auto& info : scenes::catalog()) {
       if (!wanted(info.name)) continue;
-      if (tmp.empty()) {
-        tmp = std::filesystem::temp_directory_path() /
-              ("swept-bench-plan-" + std::to_string(static_cast<long long>(std::time(nullptr))));
-      }
+      make_tmp();
       const auto t0 = Clock::now();
       auto report = scenes::generate_scene({.name = info.name, .scale = scenes::Scale::test, .output_dir = tmp / info.name});
       if (!report) {
@@ -126,7 +167,7 @@ int main(int argc, char** argv) {
       }
       std::fprintf(stderr, "bench_plan: generated %s (%zu + %zu triangles) in %.1f s\n", info.name.c_str(),
                    report->body_triangles, report->obstacle_triangles, ms_since(t0) / 1e3);
-      cases.push_back(PlanCase{info.name, *problem, std::nullopt, std::nullopt, "cad"});
+      cases.push_back(PlanCase{info.name, *problem, std::nullopt, std::nullopt, "cad", 0.0});
     }
   }
   if (cases.empty()) usage("no problem selected");

@@ -9,11 +9,16 @@
 
 namespace swept::scenes {
 
-void add_box(std::vector<Triangle>& out, const Vec3& lo, const Vec3& hi) {
-  auto v = [&](int i) { return Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()); };
+void add_hexahedron(std::vector<Triangle>& out, const std::array<Vec3, 8>& c) {
   const int f[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  for (auto& t : f) out.push_back({v(t[0]), v(t[1]), v(t[2])});
+  for (auto& t : f) out.push_back({c[t[0]], c[t[1]], c[t[2]]});
+}
+
+void add_box(std::vector<Triangle>& out, const Vec3& lo, const Vec3& hi) {
+  std::array<Vec3, 8> c;
+  for (int i = 0; i < 8; ++i) c[i] = Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
+  add_hexahedron(out, c);
 }
 
 GeneratedProblem peg_in_hole(double w, double clearance_fraction) {

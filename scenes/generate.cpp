@@ -2,6 +2,7 @@
 #include "swept/scenes/modeling.h"
 #include "swept/scenes/scene_model.h"
 #include "swept/scenes/scenes.h"
+#include "swept/scenes/planning_suite.h"
 #include "swept/scenes/problem_toml.h"
 #include "swept/io/file_write.h"
 #include "swept/io/mesh_io.h"
@@ -158,7 +159,12 @@ Result<SceneReport> generate_scene(const GenerateRequest& request) {
   if (info == cat.end()) {
     std::string names;
     for (const SceneInfo& s : cat) names.append(names.empty() ? "" : ", ").append(s.name);
-    return Error{"unknown scene '" + request.name + "' (known: " + names + ")"};
+    if (is_suite_problem(request.name))
+      return Error{"'" + request.name + "' is a planner benchmark problem, not a CAD scene: write it with "
+                   "write_suite_problem(suite_problem(name), dir), as `swept scene` does"};
+    std::string suite;
+    for (const SuiteInfo& s : suite_catalog()) suite.append(suite.empty() ? "" : ", ").append(s.name);
+    return Error{"unknown scene '" + request.name + "' (known: " + names + "; planner benchmark problems: " + suite + ")"};
   }
   std::error_code ec;
   std::filesystem::create_directories(request.output_dir, ec);

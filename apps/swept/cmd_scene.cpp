@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "output.h"
 
+#include "swept/scenes/planning_suite.h"
 #include "swept/scenes/scenes.h"
 
 #include <nlohmann/json.hpp>
@@ -28,13 +29,51 @@ void list_scenes(bool json) {
     for (const scenes::SceneInfo& s : scenes::catalog())
       arr.push_back({{"name", s.name}, {"summary", s.summary}, {"paper_body_triangles", s.paper_body_triangles},
                      {"paper_obstacle_triangles", s.paper_obstacle_triangles}});
-    std::cout << json_text(nlohmann::json{{"scenes", arr}}, 2) << "\n";
+    nlohmann::json suite = nlohmann::json::array();
+    for (const scenes::SuiteInfo& s : scenes::suite_catalog())
+      suite.push_back({{"name", s.name}, {"summary", s.summary}, {"ompl_app_counterpart", s.counterpart}});
+    std::cout << json_text(nlohmann::json{{"scenes", arr}, {"benchmark_problems", suite}}, 2) << "\n";
     return;
   }
   for (const scenes::SceneInfo& s : scenes::catalog()) {
     std::cout << s.name << "\n    " << s.summary << "\n    paper scale (Table I): body "
               << s.paper_body_triangles << " triangles, obstacles " << s.paper_obstacle_triangles << " triangles\n";
   }
+  std::cout << "\nPlanner benchmark problems (issue 13; problem.toml and an OMPL.app .cfg, --scale ignored):\n";
+  for (const scenes::SuiteInfo& s : scenes::suite_catalog())
+    std::cout << s.name << "\n    " << s.summary << "\n    counterpart of OMPL.app's " << s.counterpart << "\n";
+}
+
+/// A problem of the planner benchmark suite: meshes, problem.toml, NAME.cfg, witness.json.
+void run_suite(const SceneOptions& o) {
+  auto problem = scenes::suite_problem(o.name);
+  if (!problem) throw std::runtime_error(problem.error().message);
+  auto files = scenes::write_suite_problem(*problem, o.output);
+  if (!files) throw std::runtime_error(files.error().message);
+  const scenes::SuiteFiles& f = *files;
+  if (o.json) {
+    std::cout << json_text(nlohmann::json{{"scene", o.name},
+                                {"problem", f.problem_toml.string()},
+                                {"cfg", f.cfg.string()},
+                                {"witness", f.witness.string()},
+                                {"body_triangles", f.body_triangles},
+                                {"obstacle_triangles", f.obstacle_triangles},
+                                {"clearance", f.problem.clearance},
+                                {"passage_width", problem->passage_width},
+                                {"body_width", problem->body_width},
+                                {"passage", problem->passage}},
+                           2)
+              << "\n";
+    return;
+  }
+  Table t({"file", "role", "triangles"});
+  t.add({"body.stl", "body", fmt_int(f.body_triangles)});
+  t.add({"obstacles.stl", "obstacle", fmt_int(f.obstacle_triangles)});
+  t.print(std::cout);
+  std::cout << "passage: " << problem->passage << "\n"
+            << "problem: " << f.problem_toml.string() << "\n"
+            << "OMPL.app: " << f.cfg.string() << "\n"
+            << "witness path: " << f.witness.string() << "\n";
 }
 
 void run(const SceneOptions& o) {
@@ -44,6 +83,10 @@ void run(const SceneOptions& o) {
   }
   if (o.name.empty()) throw std::runtime_error("scene: give a scene NAME or --list");
   if (o.output.empty()) throw std::runtime_error("scene: give the output directory with -o DIR");
+  if (scenes::is_suite_problem(o.name)) {
+    run_suite(o);
+    return;
+  }
   scenes::Scale scale;
   if (!scenes::parse_scale(o.scale, scale)) throw std::runtime_error("unknown scale '" + o.scale + "' (test or paper)");
   auto report = scenes::generate_scene({.name = o.name, .scale = scale, .output_dir = o.output});
@@ -91,7 +134,10 @@ void add_scene_command(CLI::App& app) {
       "Generate a built-in CAD-like scene: B-rep solids modelled with OpenCASCADE, tessellated with\n"
       "BRepMesh (serial, deterministic), written as binary STL meshes plus problem.toml for `swept plan`.\n"
       "--scale paper matches the paper's Table I triangle counts (within 20 %); --scale test stays\n"
-      "under 30,000 triangles. `swept scene --list` describes the scenes.");
+      "under 30,000 triangles. `swept scene --list` describes the scenes.\n"
+      "Also the planner benchmark problems (issue 13): twisty-slot, bug-trap, hooks-1.5, hooks-1.2,\n"
+      "hooks-1.1, house, cubicles, spiral-tube; each written as meshes, problem.toml, an OMPL.app\n"
+      "NAME.cfg (the same problem) and witness.json (a path free by construction).");
   cmd->add_option("name", o->name, "Scene name (see --list)");
   cmd->add_option("--scale", o->scale, "test | paper")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "Output directory (created if missing)");

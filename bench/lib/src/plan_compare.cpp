@@ -42,9 +42,10 @@ SweptRun run_swept(const PlanCase& c, const PlanScene& scene, Fitter fitter, dou
 }  // namespace
 
 CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
-  const double limit = o.time_limit;
+  const double limit = c.swept_time_limit > 0.0 ? c.swept_time_limit : o.time_limit;  // swept's
   const int seeds = o.seeds, threads = o.threads;
   CompareRow row;
+  row.swept_time_limit = limit;
   row.name = c.name;
   row.kind = c.kind;
   row.clearance = c.problem.clearance;
@@ -80,6 +81,19 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
     const SweptRun again = run_swept(c, *main_scene, c.problem.build.fitter, limit, threads);
     row.main_ms.push_back(again.plan_ms);
     row.deterministic = row.deterministic && same(again.result);
+  }
+  if (first.solved()) {  // as `swept check` would: the path against the problem, apart from the planner
+    const PathCheckResult check = check_path(c.problem, *main_scene, first.path);
+    row.path_checked = check.valid;
+    std::fprintf(stderr, "  swept path check: %s\n", check.message.c_str());
+  }
+  if (o.thread_check && threads != 1 && first.solved()) {
+    const SweptRun one = run_swept(c, *main_scene, c.problem.build.fitter, limit, 1);
+    row.one_thread_status = one.result.status;
+    row.one_thread_hash = one.result.path_hash;
+    row.one_thread_ms = one.plan_ms;
+    std::fprintf(stderr, "  swept 1 thread  %-22s plan %10.1f ms  same path: %s\n",
+                 std::string(status_name(one.result.status)).c_str(), one.plan_ms, same(one.result) ? "yes" : "NO");
   }
   row.body_triangles = main_scene->body.triangles.size();
   row.obstacle_triangles = main_scene->obstacles.triangles.size();

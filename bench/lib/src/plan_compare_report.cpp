@@ -26,6 +26,9 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
   std::printf("\nPlanner side by side: swept (fitter of the problem, %s threads) vs OMPL RRTConnect + FCL, "
               "%d seeds, %.0f s limit\n",
               threads > 0 ? std::to_string(threads).c_str() : "all", seeds, limit);
+  for (const CompareRow& r : rows)
+    if (r.error.empty() && r.swept_time_limit != limit)
+      std::printf("swept's limit on %s: %.0f s (OMPL's: %.0f s)\n", r.name.c_str(), r.swept_time_limit, limit);
   if (collide_only) std::printf("OMPL's validity check: fcl::collide only (no clearance; swept still certifies it)\n");
   std::printf("%-18s %9s %11s %11s %-20s %5s | %7s %11s %21s %6s | %8s  %s\n", "problem", "clearance", "swept ms",
               "(+build)", "swept status", "wayp", "OMPL ok", "median ms", "min-max ms", "hit", "ratio", "goal");
@@ -49,7 +52,7 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
   std::printf("\nswept per fitter (plan ms of the first run without the tree build; build ms; status) and determinism\n");
   std::printf("%-18s", "problem");
   for (const FitterInfo& f : all_fitters()) std::printf(" %28s", std::string(f.name).c_str());
-  std::printf("  %s\n", "same hash every run");
+  std::printf("  %s\n", "same hash every run (and at 1 thread); check_path of the path");
   for (const CompareRow& r : rows) {
     if (!r.error.empty()) continue;
     std::printf("%-18s", r.name.c_str());
@@ -61,7 +64,9 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     }
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(r.main().result.path_hash));
-    std::printf("  %s (%s)\n", r.deterministic ? "yes" : "NO", hash);
+    const char* one = !r.one_thread_status ? "" : r.one_thread_same() ? ", 1 thread: yes" : ", 1 thread: NO";
+    const char* check = !r.path_checked ? "" : *r.path_checked ? "; check: valid" : "; check: NOT VALID";
+    std::printf("  %s (%s)%s%s\n", r.deterministic ? "yes" : "NO", hash, one, check);
   }
   std::fflush(stdout);
 }

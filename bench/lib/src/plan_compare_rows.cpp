@@ -26,6 +26,11 @@ double median(std::vector<double> t) {
 
 double CompareRow::swept_median() const { return main_ms.empty() ? main().plan_ms : median(main_ms); }
 
+bool CompareRow::one_thread_same() const {
+  return one_thread_status && !swept.empty() && *one_thread_status == main().result.status &&
+         one_thread_hash == main().result.path_hash;
+}
+
 int CompareRow::ompl_colliding() const {
   return static_cast<int>(std::count_if(ompl.begin(), ompl.end(), [](const OmplRun& r) { return r.verified == "collides"; }));
 }
@@ -111,6 +116,16 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
                             {"path_hash", hash}});
     }
     p["swept_deterministic"] = r.deterministic;
+    p["swept_time_limit_s"] = r.swept_time_limit;
+    if (r.path_checked) p["swept_path_checked"] = *r.path_checked;
+    if (r.one_thread_status) {
+      char one[32];
+      std::snprintf(one, sizeof one, "%016llx", static_cast<unsigned long long>(r.one_thread_hash));
+      p["swept_one_thread"] = {{"status", std::string(status_name(*r.one_thread_status))},
+                               {"path_hash", one},
+                               {"plan_ms", r.one_thread_ms},
+                               {"same_path", r.one_thread_same()}};
+    }
     p["swept_main_runs_ms"] = r.main_ms;
     p["swept_median_ms"] = r.swept_median();
     p["ompl_fcl_build_ms"] = r.ompl_fcl_build_ms;
@@ -164,6 +179,14 @@ std::vector<CompareRow> rows_from_json(const nlohmann::json& j) {
       r.swept.push_back(std::move(run));
     }
     r.deterministic = p.value("swept_deterministic", false);
+    r.swept_time_limit = p.value("swept_time_limit_s", j.value("time_limit_s", 0.0));
+    if (p.contains("swept_path_checked")) r.path_checked = p["swept_path_checked"].get<bool>();
+    if (p.contains("swept_one_thread")) {
+      const auto& one = p["swept_one_thread"];
+      r.one_thread_status = status_named(one.value("status", "")).value_or(PlanStatus::no_path_resolution);
+      r.one_thread_hash = std::stoull(one.value("path_hash", std::string("0")), nullptr, 16);
+      r.one_thread_ms = one.value("plan_ms", nan);
+    }
     r.main_ms = p.value("swept_main_runs_ms", std::vector<double>{});
     r.ompl_fcl_build_ms = p.value("ompl_fcl_build_ms", nan);
     for (const auto& o : p.value("ompl", nlohmann::json::array())) {

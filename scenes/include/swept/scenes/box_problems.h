@@ -4,6 +4,7 @@
 /// side-by-side planner benchmark against OMPL.
 #include "swept/plan/problem.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,13 @@ struct GeneratedProblem {
   TriangleSoup obstacles, body;
 };
 
-/// Appends the 12 triangles of the box [lo, hi].
+/// Appends the 12 triangles of the box [lo, hi], normals outward.
 void add_box(std::vector<Triangle>& out, const Vec3& lo, const Vec3& hi);
+/// Appends the 12 triangles of a hexahedron: corner i is where add_box puts its corner i (bit 0:
+/// high x, bit 1: high y, bit 2: high z). Normals point outward when the corners are a box's
+/// moved without turning any face inside out (e.g. a box with slanted sides); each quadrilateral
+/// face is split along one diagonal, so a non-planar face is two planar triangles.
+void add_hexahedron(std::vector<Triangle>& out, const std::array<Vec3, 8>& corners);
 
 /// A square peg of width w in a blind square hole with radial clearance
 /// `clearance_fraction`·w, pulled out upwards (goal: outside the block).
