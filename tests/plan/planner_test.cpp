@@ -1,5 +1,6 @@
 // The planner on problems generated here: every path checked independently of the planner.
 #include "plan/plan_support.h"
+#include "swept/scenes/planning_suite.h"
 
 #include <chrono>
 #include <cstdio>
@@ -128,10 +129,11 @@ TEST(Planner, StartInCollisionAndGoalOutsideBoundsAreErrors) {
   EXPECT_NE(r.message.find("bounds"), std::string::npos) << r.message;
 }
 
-// The same path, bit for bit, at 1, 2, 4 and 8 threads and across runs: on a problem the
-// straight-line phase solves and on two the grid search solves (with rotation).
+// The same path, bit for bit, at 1, 2, 4 and 8 threads and across runs: on problems the
+// straight-line phase solves, on one the grid or the trees solve (the bar, with rotation), and
+// on the bug trap, which only the trees (in parallel rounds) solve.
 TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
-  for (const auto& g : {l_tunnel(), t_slot(), bar_through_slot()}) {
+  for (const auto& g : {l_tunnel(), t_slot(), bar_through_slot(), scenes::suite::bug_trap().problem}) {
     const PlanScene s = scene_of(g);
     std::vector<std::uint64_t> hashes;
     std::vector<std::size_t> waypoints;
@@ -144,7 +146,9 @@ TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
       hashes.push_back(r.path_hash);
       waypoints.push_back(r.path.poses.size());
       if (g.name == "bar_through_slot") {
-        EXPECT_GE(r.level, 0) << "the bar's path must come from the grid search";
+        EXPECT_NE(r.level, -1) << "the bar's path must come from a search, not from straight moves";
+      } else if (g.name == "bug-trap") {
+        EXPECT_EQ(r.level, kTreeLevel) << "the trap's path must come from the trees";
       }
     }
     for (std::size_t i = 1; i < hashes.size(); ++i) {
