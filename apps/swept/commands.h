@@ -17,6 +17,7 @@ void add_scene_command(CLI::App& app);
 void add_mesh_stats_command(CLI::App& app);
 void add_bench_queries_command(CLI::App& app);
 void add_bench_paper_command(CLI::App& app);
+void add_disassemble_command(CLI::App& app);
 
 }  // namespace swept::cli
 
