@@ -63,6 +63,7 @@ class Sequencer {
     std::vector<bool> is_fixed(n, false);
     for (std::size_t i : out.fixed) is_fixed[i] = true;
     touching_ = contact_graph();
+    blocked_pulls_.assign(n, {});
     std::vector<std::size_t> remaining(n);
     std::iota(remaining.begin(), remaining.end(), std::size_t{0});
     int round = 0;
@@ -116,6 +117,16 @@ class Sequencer {
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
   std::atomic<std::uint64_t> queries_{0};
+  /// Pulls found blocked, per part: the direction, the length and the part that blocks it on its
+  /// own. Removing other parts cannot clear it (the same pull meets the same pose), so while that
+  /// part stays and the length is the same, the pull is not tried again. Each task of a round
+  /// touches only its own part's list.
+  struct BlockedPull {
+    Vec3 direction;
+    double length = 0;
+    std::size_t by = 0;
+  };
+  std::vector<std::vector<BlockedPull>> blocked_pulls_;
 
   std::vector<std::size_t> fixed_parts() const {
     if (o_.fixed) return *o_.fixed;
@@ -188,13 +199,26 @@ class Sequencer {
 
   double exit_margin() const { return settings_.clearance + 1e-3 * size_; }
 
-  // Straight pulls along the directions of local freedom, the first clear one.
-  Attempt try_pulls(const Body& moving, const std::vector<const Body*>& obstacles) {
+  // Straight pulls along the directions of local freedom, the first clear one. `part`: the part
+  // moving alone (its blocked pulls are remembered), or none for a group.
+  Attempt try_pulls(const Body& moving, const std::vector<const Body*>& obstacles, std::optional<std::size_t> part,
+                    const std::vector<std::size_t>& remaining) {
     Attempt at;
     const double threshold = settings_.clearance + settings_.tolerance;
     for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold)) {
       const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
-      if (!assembly_detail::pull_is_clear(moving, obstacles, d, length, settings_, queries_)) continue;
+      if (part) {
+        bool known = false;
+        for (const BlockedPull& b : blocked_pulls_[*part])
+          known = known || (b.direction == d && b.length == length &&
+                            std::find(remaining.begin(), remaining.end(), b.by) != remaining.end());
+        if (known) continue;
+      }
+      const Body* blocker = nullptr;
+      if (!assembly_detail::pull_is_clear(moving, obstacles, d, length, settings_, queries_, &blocker)) {
+        if (part && blocker) blocked_pulls_[*part].push_back({d, length, static_cast<std::size_t>(blocker - bodies_.data())});
+        continue;
+      }
       at.removed = true;
       at.direction = d;
       at.distance = length;
@@ -250,10 +274,10 @@ class Sequencer {
       if (planner) {
         attempts[k] = try_plan(group, remaining);
       } else if (group.size() == 1) {
-        attempts[k] = try_pulls(bodies_[group[0]], others(group, remaining));
+        attempts[k] = try_pulls(bodies_[group[0]], others(group, remaining), group[0], remaining);
       } else {
         const Body body = assembly_detail::make_body(a_, group, {});
-        attempts[k] = try_pulls(body, others(group, remaining));
+        attempts[k] = try_pulls(body, others(group, remaining), std::nullopt, remaining);
       }
       attempts[k].time_ms = ms_since(t0);
     });

@@ -30,9 +30,11 @@ struct PullSettings {
 
 /// Certifies the straight pull of `moving` by `length` along the unit `direction` against the
 /// `obstacles`, with the mate rule of contact.h (the only pairs allowed within the clearance).
-/// Counts distance queries into `queries`.
+/// Counts distance queries into `queries`. When it is blocked (a pose at or below the clearance
+/// found) and `blocker` is given, the obstacle nearest at that pose: it blocks this pull on its own.
 bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles, const Vec3& direction,
-                   double length, const PullSettings& settings, std::atomic<std::uint64_t>& queries);
+                   double length, const PullSettings& settings, std::atomic<std::uint64_t>& queries,
+                   const Body** blocker = nullptr);
 
 /// How far `moving` must go along `direction` for its box to leave the box of `obstacles`
 /// (grown by `margin`): 0 when there are none.

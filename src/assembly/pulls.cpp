@@ -107,7 +107,7 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
 }
 
 bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles, const Vec3& d, double length,
-                   const PullSettings& settings, std::atomic<std::uint64_t>& queries) {
+                   const PullSettings& settings, std::atomic<std::uint64_t>& queries, const Body** blocker) {
   // Only the obstacles the swept box can come near.
   Aabb swept = moving.box;
   swept.extend(Aabb{moving.box.min + length * d, moving.box.max + length * d});
@@ -122,6 +122,7 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
     mates.emplace_back([o, &moving, d, length, tol = settings.tolerance](std::uint32_t a, std::uint32_t b) {
       return mate_allows(o->triangles[a], o->planes[a], moving.triangles[b], moving.planes[b], d, length, tol);
     });
+  std::size_t nearest = 0;  // the obstacle of the smallest bound at the last pose asked
   auto bound = [&](const Pose& pose, double enough) {
     double best = kInf;
     for (std::size_t k = 0; k < near.size(); ++k) {
@@ -129,13 +130,19 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
       const double e = std::min(enough, best);
       const DistanceResult r =
           distance(near[k]->tree, Pose{}, moving.tree, pose, {.enough = e, .exclude_if = &mates[k]});
-      best = std::min(best, r.distance);
+      if (r.distance < best) best = r.distance, nearest = k;
     }
     return best;
   };
   const Vec3 reference = moving.box.center();
   const Motion motion{Pose{}, Pose::from_translation(length * d), reference, motion_radius(moving.tree, reference)};
-  return certify_motion(motion, bound, {.margin = settings.clearance}).clear();
+  const Certificate c = certify_motion(motion, bound, {.margin = settings.clearance});
+  if (blocker && c.status == MotionStatus::blocked) {
+    // Which part it was: asked again at the pose found (the certificate asks both ends first).
+    bound(Pose::from_translation(c.t_blocked * length * d), kInf);
+    *blocker = near[nearest];
+  }
+  return c.clear();
 }
 
 }  // namespace swept::assembly_detail
