@@ -48,10 +48,6 @@ const std::vector<SceneInfo>& catalog() {
        "car centre console between dashboard, gear selector, hand brake, seats and roof; goal: "
        "a pose outside the passenger door",
        73469, 300567},
-      {"gearbox",
-       "an assembly for swept disassemble: housing, cover held by four screws, shaft with a collar, "
-       "gear and two bearings; writes assembly.toml",
-       0, 520000},
   };
   return scenes;
 }
@@ -157,7 +153,8 @@ SceneModel build(const std::string& name) {
 }  // namespace
 
 Result<SceneReport> generate_scene(const GenerateRequest& request) {
-  if (request.name == "gearbox") return generate_gearbox(request);  // an assembly (gearbox.h)
+  // Not a planning problem of the paper's catalogue but an assembly (gearbox.h).
+  if (request.name == "gearbox") return generate_gearbox(request);
   const auto t0 = std::chrono::steady_clock::now();
   const auto& cat = catalog();
   const auto info = std::find_if(cat.begin(), cat.end(), [&](const SceneInfo& s) { return s.name == request.name; });
