@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 struct DisassembleCliOptions {
   std::string assembly;
   std::string output_dir;
+  std::string view;
   bool json = false;
   int jobs = 0;
   double clearance = 0.01;
@@ -92,6 +93,8 @@ void run(const DisassembleCliOptions& o) {
       path_files[i] = name;
     }
   }
+
+  if (!o.view.empty()) write_disassembly_view_file(a, r, o.view);
 
   const double total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (o.json) {
@@ -184,6 +187,7 @@ void run(const DisassembleCliOptions& o) {
               << ", sequence " << fmt_fixed(r.time_ms.sequence, 1) << "), distance queries " << r.distance_queries
               << "\n";
     if (!o.output_dir.empty()) std::cout << "written      path files in " << o.output_dir << "\n";
+    if (!o.view.empty()) std::cout << "written      " << o.view << "\n";
   }
   if (!r.complete) throw ExitCode{2};
 }
@@ -204,6 +208,7 @@ void add_disassemble_command(CLI::App& app) {
   cmd->add_flag("--json", o->json, "Print one JSON document (complete, parts, sequence, interferences, time_ms)");
   cmd->add_option("--jobs", o->jobs, "Threads for the candidates of a round (0: all cores); the same result at any count")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--view", o->view, "Also write a self-contained HTML page playing the whole disassembly (docs/viewer.md)");
   cmd->add_option("--clearance", o->clearance, "Every pair that is not a mate keeps more than this (assembly unit)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--tolerance", o->tolerance,

@@ -79,6 +79,29 @@ TEST(DisassembleCli, BoltedRingJsonAndPathFiles) {
   EXPECT_EQ(paths[0], paths[1]);
 }
 
+TEST(DisassembleCli, ViewPagePlaysTheWholeDisassembly) {
+  const fs::path dir = scratch("view");
+  const fs::path toml = write_assembly(dir, bolted_ring());
+  const CliRun r = run_cli("disassemble " + toml.string() + " --view " + (dir / "view.html").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string html = bytes_of(dir / "view.html");
+  const auto begin = html.find("<script id=\"swept-data\" type=\"application/json\">");
+  ASSERT_NE(begin, std::string::npos);
+  const auto start = html.find('>', begin) + 1;
+  const auto doc = nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
+  EXPECT_EQ(doc["format"], 2);
+  ASSERT_EQ(doc["parts"].size(), 3u);
+  EXPECT_EQ(doc["parts"][2]["name"], "bolt");
+  EXPECT_EQ(doc["parts"][2]["mesh"]["triangles"], 192);
+  ASSERT_EQ(doc["steps"].size(), 2u);
+  EXPECT_EQ(doc["steps"][0]["parts"], nlohmann::json({2}));  // the bolt first, then the ring
+  EXPECT_EQ(doc["steps"][1]["parts"], nlohmann::json({1}));
+  ASSERT_EQ(doc["steps"][0]["waypoints"].size(), 2u);
+  EXPECT_EQ(doc["steps"][0]["waypoints"][1]["s"], 1.0);
+  EXPECT_TRUE(doc["complete"].get<bool>());
+  EXPECT_NE(html.find("</html>"), std::string::npos);
+}
+
 TEST(DisassembleCli, LockedAssemblyExitsTwoWithItsBlockers) {
   const fs::path dir = scratch("riveted");
   const fs::path toml = write_assembly(dir, riveted_plates());
