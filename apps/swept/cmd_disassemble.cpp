@@ -210,13 +210,15 @@ void add_disassemble_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--view", o->view, "Also write a self-contained HTML page playing the whole disassembly (docs/viewer.md)");
   cmd->add_option("--clearance", o->clearance, "Every pair that is not a mate keeps more than this (assembly unit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance,
                   "Mating tolerance: how far mated faces may overlap (tessellation sag) and the interference "
                   "threshold; default 2 x --deflection")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--plan-time", o->plan_time, "Seconds per planner attempt when no straight pull is clear (0: no planner)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_flag("--no-subassemblies", o->no_subassemblies, "Do not try groups of touching parts");
   add_import_options(*cmd, o->import);
   cmd->callback([o] { run(*o); });
