@@ -85,6 +85,34 @@ TEST(Sequence, RivetedPlatesAreReportedWithTheirBlockers) {
   for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(rivet.blocking[k].blockers, (std::vector<std::size_t>{0, 1})) << k;
 }
 
+TEST(Sequence, ABlockInARoomLeavesByThePlannerThroughTheWindow) {
+  // A closed room (floor, ceiling, four walls) with a window in the +x wall at z ∈ [8, 19], and
+  // a block resting on the floor: every straight pull hits a wall, the floor or the ceiling; the
+  // planner lifts it to the window and out.
+  Assembly a;
+  std::vector<Triangle> room, block;
+  scenes::add_box(room, Vec3(-22, -22, -2), Vec3(22, 22, 0));   // floor
+  scenes::add_box(room, Vec3(-22, -22, 20), Vec3(22, 22, 22));  // ceiling
+  scenes::add_box(room, Vec3(-22, -22, 0), Vec3(-20, 22, 20));  // -x wall
+  scenes::add_box(room, Vec3(-20, -22, 0), Vec3(20, -20, 20));  // -y wall
+  scenes::add_box(room, Vec3(-20, 20, 0), Vec3(20, 22, 20));    // +y wall
+  scenes::add_box(room, Vec3(20, -22, 0), Vec3(22, 22, 8));     // +x wall under the window
+  scenes::add_box(room, Vec3(20, -22, 19), Vec3(22, 22, 20));   // above it
+  scenes::add_box(room, Vec3(20, -22, 8), Vec3(22, -10, 19));   // beside it
+  scenes::add_box(room, Vec3(20, 10, 8), Vec3(22, 22, 19));
+  scenes::add_box(block, Vec3(-4, -4, 0), Vec3(4, 4, 6));
+  a.parts = {part("room", room, true), part("block", block)};
+  const DisassemblyResult r = disassemble(a, {.clearance = 0.01, .tolerance = 0.2, .plan_time_limit = 20});
+  ASSERT_TRUE(r.complete);
+  ASSERT_EQ(r.sequence.size(), 1u);
+  EXPECT_EQ(r.sequence[0].method, RemovalMethod::plan);
+  ASSERT_GE(r.sequence[0].path.poses.size(), 3u);
+  // It goes out through the window: some pose has the block beyond the +x wall.
+  bool outside = false;
+  for (const Pose& q : r.sequence[0].path.poses) outside = outside || q.translation.x() > 26;
+  EXPECT_TRUE(outside);
+}
+
 TEST(Sequence, SameResultAtAnyJobCount) {
   for (const Assembly& a : {bolted_ring(), riveted_plates()}) {
     std::vector<DisassemblyResult> runs;
