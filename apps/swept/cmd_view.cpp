@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "output.h"
 
+#include "swept/assembly/disassemble.h"
 #include "swept/plan/planner.h"
 #include "swept/query/query.h"
 
@@ -300,6 +301,48 @@ void run(const ViewOptions& o) {
 
 void write_view_file(const Problem& problem, const PlanScene& scene, const Path& path, const std::string& html_file) {
   write_view(problem, scene, path, html_file, 500);
+}
+
+void write_disassembly_view_file(const Assembly& assembly, const DisassemblyResult& result,
+                                 const std::string& html_file) {
+  nlohmann::json parts = nlohmann::json::array();
+  for (std::size_t i = 0; i < assembly.parts.size(); ++i) {
+    const bool fixed = std::find(result.fixed.begin(), result.fixed.end(), i) != result.fixed.end();
+    parts.push_back({{"name", valid_utf8(assembly.parts[i].name)}, {"fixed", fixed}, {"mesh", encode_mesh(assembly.parts[i].mesh)}});
+  }
+  nlohmann::json steps = nlohmann::json::array(), blocked = nlohmann::json::array();
+  for (const SequenceStep& step : result.sequence) {
+    if (!step.removed) {
+      for (std::size_t i : step.parts) blocked.push_back(valid_utf8(assembly.parts[i].name));
+      continue;
+    }
+    // The path's parameter: by the reference point's travel (a pull: 0 and 1).
+    std::vector<double> along{0.0};
+    for (std::size_t k = 1; k < step.path.poses.size(); ++k)
+      along.push_back(along.back() + (step.path.poses[k].apply(step.reference) - step.path.poses[k - 1].apply(step.reference)).norm());
+    nlohmann::json waypoints = nlohmann::json::array();
+    for (std::size_t k = 0; k < step.path.poses.size(); ++k) {
+      const Quat q = step.path.poses[k].quaternion();
+      const double s = along.back() > 0 ? along[k] / along.back() : (step.path.poses.size() > 1 ? double(k) / double(step.path.poses.size() - 1) : 0.0);
+      waypoints.push_back({{"s", s}, {"translation", vec(step.path.poses[k].translation)}, {"quaternion", {q.x(), q.y(), q.z(), q.w()}}});
+    }
+    steps.push_back({{"parts", step.parts},
+                     {"method", step.method == RemovalMethod::pull ? "pull" : "plan"},
+                     {"reference", vec(step.reference)},
+                     {"waypoints", waypoints}});
+  }
+  const std::string title = valid_utf8(assembly.source.filename().string());
+  const nlohmann::json doc{{"format", 2},       {"title", title},   {"unit", assembly.unit}, {"parts", parts},
+                           {"steps", steps},     {"complete", result.complete}, {"blocked", blocked}};
+  std::ostringstream out;  // written whole or not at all below
+  out << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      << "<title>swept disassemble: " << html_escape(title) << "</title>\n</head>\n<body>\n"
+      << "<script id=\"swept-data\" type=\"application/json\">" << json_for_script(doc) << "</script>\n"
+      << "<script>";
+  out.write(viewer_script_data, static_cast<std::streamsize>(viewer_script_size));
+  out << "</script>\n</body>\n</html>\n";
+  write_output(html_file, out.str());
 }
 
 void add_view_command(CLI::App& app) {

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   swept::cli::add_mesh_stats_command(app);
   swept::cli::add_bench_queries_command(app);
   swept::cli::add_bench_paper_command(app);
+  swept::cli::add_disassemble_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -226,7 +226,11 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
                               : read_isolated(ctx, is_assimp ? Reader::assimp : Reader::cad, model.parts, model.warnings);
   if (!read) return read.error();
 
-  // Drop parts without triangles (empty solids, point clouds); a file without any is an error.
+  // Drop parts without triangles (empty solids, point clouds, a solid that did not mesh), each
+  // named in a warning; a file without any is an error.
+  for (const TriangleSoup& p : model.parts)
+    if (p.triangles.empty() && model.parts.size() > 1)
+      model.warnings.push_back(display + ": part '" + p.name + "' has no triangles (it did not tessellate); left out");
   std::erase_if(model.parts, [](const TriangleSoup& p) { return p.triangles.empty(); });
   if (model.parts.empty()) return file_error(display, "contains no triangles");
 

@@ -72,10 +72,14 @@ struct DistanceSearch {
   const Relative& rel;
   double rel_err, abs_err, enough;
   const TrianglePairs* exclude = nullptr;  ///< pairs left out (the planner's contact exemption)
+  /// pairs left out by a rule (the assembly's mates)
+  const std::function<bool(std::uint32_t, std::uint32_t)>* exclude_if = nullptr;
 
   DistanceSearch(const Bvh& a_, const Bvh& b_, const Relative& rel_, double rel_err_,
-                 double abs_err_, double enough_, const TrianglePairs* exclude_ = nullptr)
-      : a(a_), b(b_), rel(rel_), rel_err(rel_err_), abs_err(abs_err_), enough(enough_), exclude(exclude_) {}
+                 double abs_err_, double enough_, const TrianglePairs* exclude_ = nullptr,
+                 const std::function<bool(std::uint32_t, std::uint32_t)>* exclude_if_ = nullptr)
+      : a(a_), b(b_), rel(rel_), rel_err(rel_err_), abs_err(abs_err_), enough(enough_), exclude(exclude_),
+        exclude_if(exclude_if_) {}
 
   double best = kInf;
   bool have_witness = false;
@@ -118,6 +122,7 @@ struct DistanceSearch {
       const Triangle tb = rel.apply(b.triangles[j]);
       for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
         if (exclude && exclude->contains(a.triangle_ids[i], b.triangle_ids[j])) continue;
+        if (exclude_if && (*exclude_if)(a.triangle_ids[i], b.triangle_ids[j])) continue;
         ++stats.triangle_tests;
         TriangleDistance d;
         if (triangle_distance_below(a.triangles[i], tb, best, d) && d.distance < best) {
@@ -201,8 +206,8 @@ struct DistanceSearch {
 DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
                                  const Relative& rel, const DistanceRequest& request) {
   const double rel_err = std::max(0.0, request.rel_err), abs_err = std::max(0.0, request.abs_err);
-  DistanceSearch warm(a, b, rel, rel_err, abs_err, request.enough, request.exclude);
-  DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough, request.exclude);
+  DistanceSearch warm(a, b, rel, rel_err, abs_err, request.enough, request.exclude, request.exclude_if);
+  DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough, request.exclude, request.exclude_if);
   const DistanceSearch* used = &cold;
 
   // Overlapping models: a first-contact search finds a touching pair far faster than the
@@ -211,7 +216,7 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   // (Not with pairs left out: the first contact may be one of them.)
   std::int32_t ci = -1, cj = -1;
   const CollideResult contact =
-      request.exclude ? CollideResult{} : collide_relative(a, b, rel, {}, &ci, &cj);
+      request.exclude || request.exclude_if ? CollideResult{} : collide_relative(a, b, rel, {}, &ci, &cj);
   warm.stats = contact.stats;
   if (contact.colliding) {
     const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));

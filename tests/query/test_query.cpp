@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -213,6 +214,22 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         } else {
           EXPECT_EQ(dx.distance, rest);
         }
+        // The same pairs left out by a rule (exclude_if) give the same answer, and any rule
+        // leaves out exactly the pairs it names: brute force over the pairs it keeps.
+        const std::function<bool(std::uint32_t, std::uint32_t)> near_rule = [&](std::uint32_t i, std::uint32_t j) {
+          return pr.pairs.contains(i, j);
+        };
+        EXPECT_EQ(distance(a, pa, b, pb, {.exclude_if = &near_rule}).distance, dx.distance);
+        const std::function<bool(std::uint32_t, std::uint32_t)> thirds = [](std::uint32_t i, std::uint32_t j) {
+          return (7 * i + j) % 3 == 0;
+        };
+        double kept = std::numeric_limits<double>::infinity();
+        for (std::uint32_t i = 0; i < s.a.size(); ++i)
+          for (std::uint32_t j = 0; j < bb.size(); ++j)
+            if (!thirds(i, j)) kept = std::min(kept, triangle_distance(s.a[i], bb[j]).distance);
+        const DistanceResult dt = distance(a, pa, b, pb, {.exclude_if = &thirds});
+        EXPECT_NEAR(dt.distance, kept, 1e-12 * kept + 1e-15);
+        EXPECT_FALSE(thirds(dt.triangle_a, dt.triangle_b));
       }
     }
   }

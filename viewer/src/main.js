@@ -7,6 +7,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { base64ToBytes, decodeIndices, decodePositions, inflate } from './decode.js';
 import { PathMotion } from './path.js';
+import { startDisassembly } from './disassembly.js';
 import { ClearancePlot } from './plot.js';
 
 const CSS = `
@@ -73,6 +74,7 @@ async function start() {
   const dataElement = document.getElementById('swept-data');
   if (!dataElement) throw new Error('no scene data in this page');
   const data = JSON.parse(dataElement.textContent);
+  if (data.format === 2) return startDisassembly(data, { element, buildMesh });  // swept disassemble --view
   if (data.format !== 1) throw new Error(`unknown scene data format ${data.format}`);
   document.title = `swept view: ${data.title}`;
 

@@ -74,7 +74,8 @@ struct ImportedModel {
 /// .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly placements and names; BRepMesh in
 /// parallel, deterministic). Part names: STL solid names, assimp mesh/node names, STEP/IGES
 /// product names, "<stem>_solid<k>" for .brep solids; repeated names get "#2", "#3", ... in file
-/// order. Parts without triangles are dropped.
+/// order. Parts without triangles are dropped, each named in a warning (unless the file holds
+/// nothing else: then it is an error).
 ///
 /// Errors (never exceptions), each one line starting with the file as given: unknown output/file
 /// unit (with the accepted list), unknown extension, missing file, empty file, a binary STL whose

@@ -10,6 +10,7 @@
 #include "swept/geometry/pose.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -59,6 +60,10 @@ struct DistanceRequest {
   /// every other pair of triangles, which can be larger than the distance between the models:
   /// this is the contact exemption of the planner's escape from a start in contact.
   const TrianglePairs* exclude = nullptr;
+  /// Triangle pairs left out by a rule (not owned; null: none): pairs (A's id, B's id) for which
+  /// it returns true are skipped like `exclude`'s. It must be safe to call from many threads and
+  /// give the same answer for the same pair (the assembly's mate rule, swept/assembly/contact.h).
+  const std::function<bool(std::uint32_t triangle_a, std::uint32_t triangle_b)>* exclude_if = nullptr;
 };
 struct DistanceResult {
   double distance = std::numeric_limits<double>::infinity();

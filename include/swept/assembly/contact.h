@@ -1,0 +1,80 @@
+#pragma once
+/// The contact model of mounted parts (docs/planner.md, "Assemblies: the contact model").
+///
+/// Parts touch where they mate: planar faces face to face, a shaft in a bore of the same radius,
+/// tessellations of two mating surfaces that overlap by up to the meshing deflection. The model
+/// decides pair of triangles by pair of triangles, from the triangles alone (every input is a
+/// mesh by the time it is planned; CAD triangles carry their B-rep face's orientation, outward).
+/// A pair (o, p) of a fixed triangle o and a triangle p of the moving part is a *mate* for a
+/// straight pull of length L along the unit direction d when one of these holds:
+///
+/// 1. **Separated, and the pull does not close the gap.** A separating axis m of the two
+///    triangles, oriented by the solids' sides, has p outside o up to the mating tolerance τ at
+///    the mounted pose, and  min_v∈p m·v − max_v∈o m·v + L·min(0, m·d) ≥ −τ. The axes (the
+///    separating axes of two triangles, Gottschalk, Lin & Manocha 1996, restricted to the
+///    solids' real features): o's outward normal; minus p's; the outward in-plane normal of each
+///    *convex crease* edge of o and minus that of p's (an edge whose neighbour in the same part
+///    turns away: a face's boundary, never a diagonal inside a flat face, part_planes()); the
+///    cross product of a convex crease edge of each, with the sign that has m·(n_o − n_p) ≥ 0.
+/// 2. **Sliding.** One triangle's plane holds the pull (|n·d| ≤ 0.05: a tessellated cylinder's
+///    facets are not exactly parallel to its axis) and the part of the other inside the strip it
+///    sweeps (its extent across d) is in front of that plane up to τ, counting how far the plane
+///    advances over the pull (L·max(0, n·d)).
+/// 3. **Missing.** The column p sweeps along d (|n_p·d| ≥ 0.05), shrunk by τ on every side, does
+///    not meet o: the end of a shaft coming out of its bore past the rim of the face round it.
+///
+/// So no mate reaches more than τ into the other along the whole pull. A mate slides along its
+/// plane (a nut along its bolt, a shaft along its bore, whose tessellations of one circle cross
+/// by less than their sag) or separates from it (a cover lifted off its housing); it never
+/// presses (m·d < 0 over more than τ). Contact normals thus bound the directions a part can
+/// move in (local freedom, Wilson & Latombe 1994): a planar mate forbids d·n < 0, facets all
+/// round an axis leave only the axis. Every other pair keeps the clearance along the whole
+/// motion.
+#include "swept/geometry/types.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace swept {
+
+/// A triangle's plane: outward unit normal (vertex order; zero for a degenerate triangle) and
+/// offset n·p, and which of its edges are convex creases of its part (bit i: the edge from
+/// vertex i to vertex i + 1).
+struct TrianglePlane {
+  Vec3 normal = Vec3::Zero();
+  double offset = 0.0;
+  std::uint8_t creases = 0;
+};
+/// The plane of one triangle, without crease edges (they need the part: part_planes()).
+TrianglePlane plane_of(const Triangle& t);
+
+/// The planes of a part's triangles with their convex crease edges: an edge (matched by exact
+/// vertex coordinates) shared with exactly one other triangle whose plane has this triangle's
+/// third vertex behind it by more than 1e-9 of the edge's length (a convex dihedral). Edges
+/// between coplanar triangles, concave edges, and open or non-manifold edges (vertices that do not
+/// match exactly) are not creases: fewer axes, fewer mates, the conservative side. Deterministic.
+std::vector<TrianglePlane> part_planes(const std::vector<Triangle>& triangles);
+
+/// How far `b` reaches behind the plane of `a` (−(min over b's vertices of n_a·v − offset_a)):
+/// ≤ 0 when the plane separates them, +∞ for a degenerate `a`.
+double depth_behind(const TrianglePlane& a, const Triangle& b);
+
+/// The mate rule above for one pair at the mounted pose (`o` fixed, `p` of the moving part,
+/// both world frame; `po`, `pp` their plane_of()) and a pull of `length` along the unit `direction`.
+bool mate_allows(const Triangle& o, const TrianglePlane& po, const Triangle& p, const TrianglePlane& pp,
+                 const Vec3& direction, double length, double tolerance);
+
+/// How deep `b` reaches into `a`: the smallest overlap of their projections on the oriented
+/// separating axes above (a as o, b as p); ≤ 0 when they are apart.
+double pair_overlap(const Triangle& a, const TrianglePlane& pa, const Triangle& b, const TrianglePlane& pb);
+
+/// Two parts overlapping by more than the mating tolerance at their mounted poses.
+struct Interference {
+  std::size_t part_a = 0, part_b = 0;   ///< indices into the assembly's parts, a < b
+  double depth = 0.0;                   ///< the deepest intersecting triangle pair's pair_overlap
+  double extent = 0.0;                  ///< diagonal of the box of the intersecting triangles' crossing points
+  std::size_t triangle_pairs = 0;       ///< intersecting triangle pairs deeper than the tolerance
+};
+
+}  // namespace swept

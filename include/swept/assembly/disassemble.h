@@ -1,0 +1,81 @@
+#pragma once
+/// Disassembly sequences of whole assemblies (SPEC §6; docs/assembly.md).
+///
+/// Round by round, every part still in place is tried: first straight pulls along its local
+/// freedom directions (±x, ±y, ±z, then the normals and axes of its contacts) to outside the
+/// box of the parts still in place, certified against all of them with the contact model of
+/// contact.h; when no part leaves straight, the planner (swept::plan) with the others as
+/// obstacles; when no single part leaves, connected groups of touching parts as one body. One
+/// part (or group) is removed per round by a fixed rule, and the rounds go on until every
+/// movable part is out or none can leave; the parts that stay are reported with their blockers
+/// per direction. Deterministic: the same assembly and options give the same result at any
+/// number of jobs (parallel work is consumed in part order).
+#include "swept/assembly/assembly.h"
+#include "swept/assembly/contact.h"
+#include "swept/geometry/pose.h"
+#include "swept/plan/problem.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swept {
+
+struct DisassemblyOptions {
+  double clearance = 0.01;  ///< every non-mated pair keeps more than this (assembly unit)
+  /// Mated pairs may overlap across their plane by up to this much (tessellation sag of both
+  /// meshes); also the interference threshold. ≤ 0: 0.2, twice the default linear deflection
+  /// (`swept disassemble` passes twice its --deflection).
+  double tolerance = 0.0;
+  int jobs = 0;                     ///< threads for the candidates of a round (0: all cores)
+  double plan_time_limit = 2.0;     ///< seconds per planner attempt (0: no planner fallback)
+  bool subassemblies = true;        ///< try groups of touching parts when no single part leaves
+  /// The parts never moved, by index; empty: the parts marked `fixed`, or when none is, the
+  /// part with the largest bounding box (the base).
+  std::optional<std::vector<std::size_t>> fixed;
+};
+
+/// How a part (or group) left.
+enum class RemovalMethod { pull, plan };
+
+/// One entry of the sequence.
+struct SequenceStep {
+  std::vector<std::size_t> parts;  ///< one part, or a subassembly (ascending indices)
+  bool removed = false;            ///< false: blocked (the remaining parts at the end)
+  RemovalMethod method = RemovalMethod::pull;
+  Vec3 direction = Vec3::Zero();   ///< pull: the unit direction
+  double distance = 0.0;           ///< pull: how far (to outside the remaining parts' box)
+  Path path;                       ///< the motion (poses of the part's frame = world at the mounted pose)
+  Vec3 reference = Vec3::Zero();   ///< the point the path's rotations interpolate about
+  int round = 0;                   ///< 1-based; blocked steps: the last round
+  double time_ms = 0.0;            ///< time of the round's attempts on this part (not deterministic)
+  /// Blocked: for each direction tried, the parts that block a pull along it on their own.
+  struct Blocking {
+    Vec3 direction = Vec3::Zero();
+    std::vector<std::size_t> blockers;
+  };
+  std::vector<Blocking> blocking;
+};
+
+struct DisassemblyResult {
+  bool complete = false;  ///< every movable part removed
+  std::vector<std::size_t> fixed;           ///< the parts never moved
+  std::vector<Interference> interferences;  ///< checked first, at the mounted poses
+  std::vector<SequenceStep> sequence;       ///< removals in order, then the blocked parts
+  double tolerance = 0.0;                   ///< the mating tolerance used
+  struct {
+    double build = 0, interference = 0, sequence = 0;
+  } time_ms;
+  std::uint64_t distance_queries = 0;
+};
+
+/// Parts overlapping by more than `tolerance` at their mounted poses, pair by pair (i < j), with
+/// the deepest triangle pair by the mate rule's overlap. Deterministic; runs in the caller's arena.
+std::vector<Interference> find_interferences(const Assembly& assembly, double tolerance);
+
+/// The disassembly sequence. Parts in an interference are not exempted: they simply block each
+/// other (the interference is reported first).
+DisassemblyResult disassemble(const Assembly& assembly, const DisassemblyOptions& options = {});
+
+}  // namespace swept

@@ -1,0 +1,322 @@
+// The disassembly sequence (disassemble.h; docs/assembly.md): rounds of straight pulls, the
+// planner as fallback, subassemblies, and the blocking graph of what stays.
+#include "parts.h"
+
+#include "swept/plan/planner.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace swept {
+namespace {
+
+using assembly_detail::Body;
+using assembly_detail::PullSettings;
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+struct Attempt {
+  bool removed = false;
+  RemovalMethod method = RemovalMethod::pull;
+  Vec3 direction = Vec3::Zero();
+  double distance = 0.0;
+  Path path;
+  Vec3 reference = Vec3::Zero();
+  double time_ms = 0.0;
+};
+
+// The scale of the assembly: the diagonal of its box.
+double assembly_size(const std::vector<Body>& bodies) {
+  Aabb all;
+  for (const Body& b : bodies) all.extend(b.box);
+  return all.extent();
+}
+
+class Sequencer {
+ public:
+  Sequencer(const Assembly& a, const DisassemblyOptions& o, double tolerance)
+      : a_(a), o_(o), settings_{o.clearance, tolerance} {}
+
+  DisassemblyResult run() {
+    DisassemblyResult out;
+    out.tolerance = settings_.tolerance;
+    const std::size_t n = a_.parts.size();
+    auto t0 = Clock::now();
+    bodies_.resize(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies_[i] = assembly_detail::make_body(a_, {i}, {}); });
+    size_ = assembly_size(bodies_);
+    out.time_ms.build = ms_since(t0);
+
+    t0 = Clock::now();
+    out.interferences = find_interferences(a_, settings_.tolerance);
+    out.time_ms.interference = ms_since(t0);
+
+    t0 = Clock::now();
+    out.fixed = fixed_parts();
+    std::vector<bool> is_fixed(n, false);
+    for (std::size_t i : out.fixed) is_fixed[i] = true;
+    touching_ = contact_graph();
+    blocked_pulls_.assign(n, {});
+    std::vector<std::size_t> remaining(n);
+    std::iota(remaining.begin(), remaining.end(), std::size_t{0});
+    int round = 0;
+    for (;;) {
+      std::vector<std::size_t> movable;
+      for (std::size_t i : remaining)
+        if (!is_fixed[i]) movable.push_back(i);
+      if (movable.empty()) {
+        out.complete = true;
+        break;
+      }
+      ++round;
+      // Single parts, straight pulls; then the planner; then subassemblies. The first success in
+      // part order is removed.
+      std::vector<std::vector<std::size_t>> candidates;
+      for (std::size_t i : movable) candidates.push_back({i});
+      std::optional<std::pair<std::vector<std::size_t>, Attempt>> chosen = first_removal(candidates, remaining, false);
+      if (!chosen && o_.plan_time_limit > 0) chosen = first_removal(candidates, remaining, true);
+      if (!chosen && o_.subassemblies) chosen = first_removal(subassemblies(movable), remaining, false);
+      if (!chosen) {
+        // What stays, and why: the blocking graph.
+        std::vector<SequenceStep> blocked(movable.size());
+        tbb::parallel_for(std::size_t{0}, movable.size(),
+                          [&](std::size_t k) { blocked[k] = blocking_of(movable[k], remaining, round); });
+        for (SequenceStep& s : blocked) out.sequence.push_back(std::move(s));
+        break;
+      }
+      SequenceStep s;
+      s.parts = chosen->first;
+      s.removed = true;
+      s.method = chosen->second.method;
+      s.direction = chosen->second.direction;
+      s.distance = chosen->second.distance;
+      s.path = std::move(chosen->second.path);
+      s.reference = chosen->second.reference;
+      s.round = round;
+      s.time_ms = chosen->second.time_ms;
+      for (std::size_t i : s.parts) std::erase(remaining, i);
+      out.sequence.push_back(std::move(s));
+    }
+    out.time_ms.sequence = ms_since(t0);
+    out.distance_queries = queries_.load();
+    return out;
+  }
+
+ private:
+  const Assembly& a_;
+  const DisassemblyOptions& o_;
+  PullSettings settings_;
+  std::vector<Body> bodies_;
+  double size_ = 0.0;
+  std::vector<std::vector<bool>> touching_;
+  std::atomic<std::uint64_t> queries_{0};
+  /// Pulls found blocked, per part: the direction, the length and the part that blocks it on its
+  /// own. Removing other parts cannot clear it (the same pull meets the same pose), so while that
+  /// part stays and the length is the same, the pull is not tried again. Each task of a round
+  /// touches only its own part's list.
+  struct BlockedPull {
+    Vec3 direction;
+    double length = 0;
+    std::size_t by = 0;
+  };
+  std::vector<std::vector<BlockedPull>> blocked_pulls_;
+
+  std::vector<std::size_t> fixed_parts() const {
+    if (o_.fixed) return *o_.fixed;
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < a_.parts.size(); ++i)
+      if (a_.parts[i].fixed) out.push_back(i);
+    if (!out.empty() || a_.parts.size() < 2) return out;
+    // The base: the part with the largest bounding box (the first of equals).
+    std::size_t best = 0;
+    double volume = -1.0;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const Vec3 e = (bodies_[i].box.max - bodies_[i].box.min).cwiseMax(Vec3::Zero());
+      const double v = e.x() * e.y() * e.z();
+      if (v > volume) volume = v, best = i;
+    }
+    return {best};
+  }
+
+  // Parts closer than clearance + tolerance at the mounted poses.
+  std::vector<std::vector<bool>> contact_graph() const {
+    const std::size_t n = bodies_.size();
+    const double threshold = settings_.clearance + settings_.tolerance;
+    std::vector<std::vector<bool>> g(n, std::vector<bool>(n, false));
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) pairs.push_back({i, j});
+    std::vector<char> near(pairs.size(), 0);
+    tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+      const auto [i, j] = pairs[k];
+      const DistanceResult d = distance(bodies_[i].tree, Pose{}, bodies_[j].tree, Pose{}, {.enough = threshold});
+      near[k] = d.distance < threshold;
+    });
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      if (near[k]) g[pairs[k].first][pairs[k].second] = g[pairs[k].second][pairs[k].first] = true;
+    return g;
+  }
+
+  // Connected groups of touching movable parts: each connected component (two parts or more),
+  // then each touching pair, smallest first.
+  std::vector<std::vector<std::size_t>> subassemblies(const std::vector<std::size_t>& movable) const {
+    std::set<std::vector<std::size_t>> groups;
+    std::set<std::size_t> seen;
+    for (std::size_t start : movable) {
+      if (seen.count(start)) continue;
+      std::vector<std::size_t> component{start}, stack{start};
+      seen.insert(start);
+      while (!stack.empty()) {
+        const std::size_t i = stack.back();
+        stack.pop_back();
+        for (std::size_t j : movable)
+          if (touching_[i][j] && !seen.count(j)) seen.insert(j), component.push_back(j), stack.push_back(j);
+      }
+      std::sort(component.begin(), component.end());
+      if (component.size() >= 2) groups.insert(component);
+    }
+    for (std::size_t x = 0; x < movable.size(); ++x)
+      for (std::size_t y = x + 1; y < movable.size(); ++y)
+        if (touching_[movable[x]][movable[y]]) groups.insert({movable[x], movable[y]});
+    std::vector<std::vector<std::size_t>> out(groups.begin(), groups.end());
+    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    return out;
+  }
+
+  std::vector<const Body*> others(const std::vector<std::size_t>& group, const std::vector<std::size_t>& remaining) const {
+    std::vector<const Body*> out;
+    for (std::size_t i : remaining)
+      if (std::find(group.begin(), group.end(), i) == group.end()) out.push_back(&bodies_[i]);
+    return out;
+  }
+
+  double exit_margin() const { return settings_.clearance + 1e-3 * size_; }
+
+  // Straight pulls along the directions of local freedom, the first clear one. `part`: the part
+  // moving alone (its blocked pulls are remembered), or none for a group.
+  Attempt try_pulls(const Body& moving, const std::vector<const Body*>& obstacles, std::optional<std::size_t> part,
+                    const std::vector<std::size_t>& remaining) {
+    Attempt at;
+    const double threshold = settings_.clearance + settings_.tolerance;
+    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold)) {
+      const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
+      if (part) {
+        bool known = false;
+        for (const BlockedPull& b : blocked_pulls_[*part])
+          known = known || (b.direction == d && b.length == length &&
+                            std::find(remaining.begin(), remaining.end(), b.by) != remaining.end());
+        if (known) continue;
+      }
+      const Body* blocker = nullptr;
+      if (!assembly_detail::pull_is_clear(moving, obstacles, d, length, settings_, queries_, &blocker)) {
+        if (part && blocker) blocked_pulls_[*part].push_back({d, length, static_cast<std::size_t>(blocker - bodies_.data())});
+        continue;
+      }
+      at.removed = true;
+      at.direction = d;
+      at.distance = length;
+      at.reference = moving.box.center();
+      at.path.poses = {Pose{}, Pose::from_translation(length * d)};
+      return at;
+    }
+    return at;
+  }
+
+  // The planner with the others as obstacles (its escape from contact exempts the pairs that
+  // touch at the mounted pose, pair by pair; docs/planner.md).
+  Attempt try_plan(const std::vector<std::size_t>& group, const std::vector<std::size_t>& remaining) {
+    Attempt at;
+    TriangleSoup obstacles, body;
+    for (std::size_t i : remaining) {
+      const auto& t = a_.parts[i].mesh.triangles;
+      auto& to = std::find(group.begin(), group.end(), i) == group.end() ? obstacles : body;
+      to.triangles.insert(to.triangles.end(), t.begin(), t.end());
+    }
+    if (obstacles.triangles.empty()) return at;
+    Aabb box;
+    for (const Triangle& t : body.triangles)
+      for (int v = 0; v < 3; ++v) box.extend(t[v]);
+    auto scene = make_scene(std::move(obstacles), std::move(body), {}, box.center());
+    if (!scene) return at;
+    Problem p;
+    p.unit = a_.unit;
+    p.start = Pose{};
+    p.goal_outside = true;
+    p.clearance = settings_.clearance;
+    p.contact_tolerance = settings_.tolerance;
+    p.rotation = RotationMode::free;
+    p.time_limit = o_.plan_time_limit;
+    p.threads = 1;
+    const PlanResult r = plan(p, *scene, {.threads = 1});
+    queries_ += r.queries.distance;
+    if (!r.solved()) return at;
+    at.removed = true;
+    at.method = RemovalMethod::plan;
+    at.path = r.path;
+    at.reference = scene->reference;
+    at.distance = r.path_length;
+    return at;
+  }
+
+  std::optional<std::pair<std::vector<std::size_t>, Attempt>> first_removal(
+      const std::vector<std::vector<std::size_t>>& candidates, const std::vector<std::size_t>& remaining, bool planner) {
+    std::vector<Attempt> attempts(candidates.size());
+    tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t k) {
+      const auto t0 = Clock::now();
+      const std::vector<std::size_t>& group = candidates[k];
+      if (planner) {
+        attempts[k] = try_plan(group, remaining);
+      } else if (group.size() == 1) {
+        attempts[k] = try_pulls(bodies_[group[0]], others(group, remaining), group[0], remaining);
+      } else {
+        const Body body = assembly_detail::make_body(a_, group, {});
+        attempts[k] = try_pulls(body, others(group, remaining), std::nullopt, remaining);
+      }
+      attempts[k].time_ms = ms_since(t0);
+    });
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+      if (attempts[k].removed) return std::make_pair(candidates[k], std::move(attempts[k]));
+    return std::nullopt;
+  }
+
+  // For a part that stays: along each direction of local freedom, the parts that block a pull
+  // on their own (the directional blocking graph, Wilson & Latombe 1994).
+  SequenceStep blocking_of(std::size_t part, const std::vector<std::size_t>& remaining, int round) {
+    SequenceStep s;
+    s.parts = {part};
+    s.round = round;
+    const auto t0 = Clock::now();
+    const std::vector<const Body*> obstacles = others({part}, remaining);
+    const Body& moving = bodies_[part];
+    const double threshold = settings_.clearance + settings_.tolerance;
+    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold)) {
+      const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
+      SequenceStep::Blocking b{d, {}};
+      for (std::size_t i : remaining)
+        if (i != part && !assembly_detail::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_))
+          b.blockers.push_back(i);
+      s.blocking.push_back(std::move(b));
+    }
+    s.time_ms = ms_since(t0);
+    return s;
+  }
+};
+
+}  // namespace
+
+DisassemblyResult disassemble(const Assembly& assembly, const DisassemblyOptions& options) {
+  const double tolerance = options.tolerance > 0 ? options.tolerance : 2.0 * ImportOptions{}.linear_deflection;
+  tbb::task_arena arena(options.jobs > 0 ? options.jobs : tbb::task_arena::automatic);
+  DisassemblyResult out;
+  arena.execute([&] { out = Sequencer(assembly, options, tolerance).run(); });
+  return out;
+}
+
+}  // namespace swept

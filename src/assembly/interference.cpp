@@ -1,0 +1,54 @@
+// Interferences at the mounted poses (disassemble.h): parts that overlap by more than the mating
+// tolerance, found before any part is moved.
+#include "parts.h"
+
+#include "swept/geometry/distance.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace swept {
+
+std::vector<Interference> find_interferences(const Assembly& assembly, double tolerance) {
+  const std::size_t n = assembly.parts.size();
+  std::vector<assembly_detail::Body> bodies(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies[i] = assembly_detail::make_body(assembly, {i}, {}); });
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Aabb& a = bodies[i].box;
+      const Aabb& b = bodies[j].box;
+      if ((a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all()) pairs.push_back({i, j});
+    }
+  std::vector<std::optional<Interference>> found(pairs.size());
+  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+    const auto [i, j] = pairs[k];
+    const assembly_detail::Body& a = bodies[i];
+    const assembly_detail::Body& b = bodies[j];
+    const CollideResult c = collide(a.tree, Pose{}, b.tree, Pose{}, {.all_contacts = true});
+    Interference f{i, j};
+    Aabb where;
+    for (const ContactPair& p : c.contacts) {
+      const Triangle& ta = a.triangles[p.triangle_a];
+      const Triangle& tb = b.triangles[p.triangle_b];
+      const double overlap = pair_overlap(ta, a.planes[p.triangle_a], tb, b.planes[p.triangle_b]);
+      if (!(overlap > tolerance) || !std::isfinite(overlap)) continue;  // degenerate pairs have no depth
+      ++f.triangle_pairs;
+      f.depth = std::max(f.depth, overlap);
+      const TriangleDistance d = triangle_distance(ta, tb);
+      where.extend(d.point_a);
+    }
+    if (f.triangle_pairs == 0) return;
+    f.extent = where.extent();
+    found[k] = f;
+  });
+  std::vector<Interference> out;
+  for (const auto& f : found)
+    if (f) out.push_back(*f);
+  return out;
+}
+
+}  // namespace swept

@@ -1,0 +1,143 @@
+// `swept disassemble` end to end: the JSON document, the path files, the same bytes at any
+// --jobs, exit codes, and bad input that writes nothing.
+#include "assembly/assembly_support.h"
+#include "support/cli_support.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace swept {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace swept::test;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(SWEPT_BINARY_DIR) / "tests_apps_scratch" / ("disassemble_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string bytes_of(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// An assembly written as STL files plus a TOML file (the base fixed).
+fs::path write_assembly(const fs::path& dir, const Assembly& a) {
+  std::string toml;
+  for (std::size_t i = 0; i < a.parts.size(); ++i) {
+    const std::string file = a.parts[i].name + ".stl";
+    EXPECT_TRUE(write_stl_binary(dir / file, a.parts[i].mesh).ok());
+    toml += "[[part]]\nfile = \"" + file + "\"\n" + (i == 0 ? "fixed = true\n" : "");
+  }
+  std::ofstream(dir / "assembly.toml") << toml;
+  return dir / "assembly.toml";
+}
+
+TEST(DisassembleCli, BoltedRingJsonAndPathFiles) {
+  const fs::path dir = scratch("bolted");
+  const fs::path toml = write_assembly(dir, bolted_ring());
+  std::vector<std::string> docs, paths;
+  for (int jobs : {1, 2}) {
+    const fs::path out = dir / ("out" + std::to_string(jobs));
+    const CliRun r = run_cli("disassemble " + toml.string() + " --json --jobs " + std::to_string(jobs) + " -o " +
+                                 out.string(),
+                             false);
+    ASSERT_EQ(r.code, 0) << r.out;
+    auto doc = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(doc["complete"].get<bool>());
+    ASSERT_EQ(doc["parts"].size(), 3u);
+    EXPECT_EQ(doc["parts"][0]["name"], "base");
+    EXPECT_TRUE(doc["parts"][0]["fixed"].get<bool>());
+    EXPECT_EQ(doc["parts"][2]["triangles"], 192);
+    ASSERT_EQ(doc["sequence"].size(), 2u);
+    EXPECT_EQ(doc["sequence"][0]["part"], "bolt");
+    EXPECT_EQ(doc["sequence"][0]["status"], "removed");
+    EXPECT_EQ(doc["sequence"][0]["direction"], nlohmann::json({0.0, 0.0, 1.0}));
+    EXPECT_EQ(doc["sequence"][1]["part"], "ring");
+    EXPECT_TRUE(doc["interferences"].empty());
+    EXPECT_GT(doc["time_ms"]["total"].get<double>(), 0.0);
+    const std::string path_file = doc["sequence"][0]["path"];
+    EXPECT_EQ(path_file, "01-bolt.json");
+    ASSERT_TRUE(fs::exists(out / path_file));
+    auto path = read_path(out / path_file);
+    ASSERT_TRUE(path.ok()) << path.error().message;
+    ASSERT_EQ(path->poses.size(), 2u);
+    EXPECT_NEAR(path->poses[1].translation.z(), doc["sequence"][0]["distance"].get<double>(), 1e-9);
+    doc.erase("time_ms");  // the one thing that differs between runs
+    docs.push_back(doc.dump());
+    paths.push_back(bytes_of(out / "01-bolt.json") + bytes_of(out / "02-ring.json"));
+  }
+  EXPECT_EQ(docs[0], docs[1]);
+  EXPECT_EQ(paths[0], paths[1]);
+}
+
+TEST(DisassembleCli, ViewPagePlaysTheWholeDisassembly) {
+  const fs::path dir = scratch("view");
+  const fs::path toml = write_assembly(dir, bolted_ring());
+  const CliRun r = run_cli("disassemble " + toml.string() + " --view " + (dir / "view.html").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string html = bytes_of(dir / "view.html");
+  const auto begin = html.find("<script id=\"swept-data\" type=\"application/json\">");
+  ASSERT_NE(begin, std::string::npos);
+  const auto start = html.find('>', begin) + 1;
+  const auto doc = nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
+  EXPECT_EQ(doc["format"], 2);
+  ASSERT_EQ(doc["parts"].size(), 3u);
+  EXPECT_EQ(doc["parts"][2]["name"], "bolt");
+  EXPECT_EQ(doc["parts"][2]["mesh"]["triangles"], 192);
+  ASSERT_EQ(doc["steps"].size(), 2u);
+  EXPECT_EQ(doc["steps"][0]["parts"], nlohmann::json({2}));  // the bolt first, then the ring
+  EXPECT_EQ(doc["steps"][1]["parts"], nlohmann::json({1}));
+  ASSERT_EQ(doc["steps"][0]["waypoints"].size(), 2u);
+  EXPECT_EQ(doc["steps"][0]["waypoints"][1]["s"], 1.0);
+  EXPECT_TRUE(doc["complete"].get<bool>());
+  EXPECT_NE(html.find("</html>"), std::string::npos);
+}
+
+TEST(DisassembleCli, LockedAssemblyExitsTwoWithItsBlockers) {
+  const fs::path dir = scratch("riveted");
+  const fs::path toml = write_assembly(dir, riveted_plates());
+  const CliRun r = run_cli("disassemble " + toml.string() + " --json --plan-time 0.2", false);
+  ASSERT_EQ(r.code, 2) << r.out;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(doc["complete"].get<bool>());
+  ASSERT_EQ(doc["sequence"].size(), 2u);
+  EXPECT_EQ(doc["sequence"][0]["part"], "plate_b");
+  EXPECT_EQ(doc["sequence"][0]["status"], "blocked");
+  EXPECT_EQ(doc["sequence"][0]["blockers"], nlohmann::json({"plate_a", "rivet"}));
+  EXPECT_EQ(doc["sequence"][1]["blockers"], nlohmann::json({"plate_a", "plate_b"}));
+  // The table names them too.
+  const CliRun table = run_cli("disassemble " + toml.string() + " --plan-time 0");
+  EXPECT_EQ(table.code, 2);
+  EXPECT_NE(table.out.find("blocked"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("not complete"), std::string::npos) << table.out;
+}
+
+TEST(DisassembleCli, BadInputIsExitOneAndWritesNothing) {
+  const fs::path dir = scratch("bad");
+  const fs::path toml = write_assembly(dir, bolted_ring());
+  std::ofstream(dir / "dup.toml") << "[[part]]\nfile = \"bolt.stl\"\n[[part]]\nfile = \"bolt.stl\"\n";
+  CliRun r = run_cli("disassemble " + (dir / "dup.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("two parts are named 'bolt'"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::create_directories(dir / "empty");
+  r = run_cli("disassemble " + (dir / "empty").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("empty"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  r = run_cli("disassemble " + (dir / "missing.step").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("missing.step"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace swept

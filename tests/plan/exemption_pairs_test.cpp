@@ -1,0 +1,155 @@
+// The hole the per-pair exemption closes (issue 14): a cover lifted past a shaft unit whose far
+// triangles were not in contact at the start. Exempting every (body triangle in contact) ×
+// (obstacle triangle in contact) certifies a lift through the bearing's flange; exempting only
+// the pairs that touched (docs/planner.md, "Starting in contact") refuses it. Which of the two
+// is right is decided by a brute-force sampled check with the oracle's own triangle distance,
+// which knows nothing of the planner or of the query layer.
+#include "oracle/path_oracle.h"
+#include "plan/plan_support.h"
+#include "swept/plan/check.h"
+
+#include <set>
+
+namespace swept {
+namespace {
+
+using namespace swept::test;
+using scenes::add_box;
+using scenes::GeneratedProblem;
+
+constexpr double kClearance = 0.01;
+constexpr double kTolerance = 0.02;
+constexpr double kThreshold = kClearance + kTolerance;  // contact pairs: closer than this at the start
+constexpr double kLift = 56.0;
+
+// Base plate (top z = 0); a square shaft [-3, 3]² × [0, 30] on it; a bearing flange
+// [-8, 8]² × [5, 7] on the shaft, clamping the cover. The cover (the body): a plate
+// [-15, 15]² × [0, 5] resting on the base, with a hole 0.02 wider than the shaft on every side,
+// and a rim wall [8, 10] × [-15, 15] × [5, 12] standing against the flange's +x face. The rim
+// touches the flange's top triangles along their edge x = 8, so every flange triangle is "in
+// contact"; but the cover's top face, 2 below the flange's top at the start, never was near it.
+// There is no way out: the base below, the shaft through the hole, the flange above.
+GeneratedProblem cover_under_bearing() {
+  GeneratedProblem g;
+  g.name = "cover_under_bearing";
+  auto& o = g.obstacles.triangles;
+  add_box(o, Vec3(-20, -20, -5), Vec3(20, 20, 0));  // base
+  add_box(o, Vec3(-3, -3, 0), Vec3(3, 3, 30));      // shaft
+  add_box(o, Vec3(-8, -8, 5), Vec3(8, 8, 7));       // bearing flange
+  const double h = 3.02;
+  auto& b = g.body.triangles;
+  add_box(b, Vec3(-15, -15, 0), Vec3(-h, 15, 5));
+  add_box(b, Vec3(h, -15, 0), Vec3(15, 15, 5));
+  add_box(b, Vec3(-h, -15, 0), Vec3(h, -h, 5));
+  add_box(b, Vec3(-h, h, 0), Vec3(h, 15, 5));
+  add_box(b, Vec3(8, -15, 5), Vec3(10, 15, 12));  // rim wall
+  g.problem.start = Pose{};
+  g.problem.goal_outside = true;
+  g.problem.clearance = kClearance;
+  g.problem.contact_tolerance = kTolerance;
+  g.problem.rotation = RotationMode::none;
+  g.problem.time_limit = 10;
+  return g;
+}
+
+oracle::Tri to_oracle(const Triangle& t) { return {{t.p, t.q, t.r}}; }
+
+// The old rule: every obstacle triangle in contact × every body triangle in contact.
+TrianglePairs cross_product_of(const TrianglePairs& touching, std::size_t obstacle_count, std::size_t body_count) {
+  std::set<std::uint32_t> obstacles, body;
+  for (const ContactPair& p : touching.pairs) obstacles.insert(p.triangle_a), body.insert(p.triangle_b);
+  TrianglePairs all;
+  for (std::uint32_t i : obstacles)
+    for (std::uint32_t j : body) all.pairs.push_back({i, j});
+  EXPECT_LE(obstacles.size(), obstacle_count);
+  EXPECT_LE(body.size(), body_count);
+  return all;  // ordered by (obstacle, body) already
+}
+
+// Brute force over every triangle pair at `samples` + 1 poses of the lift, with the oracle's
+// triangle distance: the lift heights at which a pair that was not closer than the threshold at
+// the start is closer than the clearance (through material, or at least through the margin).
+std::vector<double> violations(const GeneratedProblem& g, int samples) {
+  std::vector<oracle::Tri> obstacles, body;
+  for (const Triangle& t : g.obstacles.triangles) obstacles.push_back(to_oracle(t));
+  for (const Triangle& t : g.body.triangles) body.push_back(to_oracle(t));
+  auto moved = [](oracle::Tri t, double z) {
+    for (auto& v : t.v) v.z() += z;
+    return t;
+  };
+  std::vector<std::vector<bool>> touched(obstacles.size(), std::vector<bool>(body.size()));
+  for (std::size_t i = 0; i < obstacles.size(); ++i)
+    for (std::size_t j = 0; j < body.size(); ++j)
+      touched[i][j] = oracle::triangle_distance(obstacles[i], body[j]) < kThreshold;
+  std::vector<double> out;
+  for (int k = 0; k <= samples; ++k) {
+    const double z = kLift * k / samples;
+    bool bad = false;
+    for (std::size_t i = 0; i < obstacles.size() && !bad; ++i)
+      for (std::size_t j = 0; j < body.size() && !bad; ++j)
+        bad = !touched[i][j] && oracle::triangle_distance(obstacles[i], moved(body[j], z)) < kClearance;
+    if (bad) out.push_back(z);
+  }
+  return out;
+}
+
+TEST(ExemptionPairs, CoverLiftedThroughABearingIsRefused) {
+  const GeneratedProblem g = cover_under_bearing();
+  const PlanScene s = scene_of(g);
+  const Path lift{{Pose{}, Pose::from_translation(Vec3(0, 0, kLift))}};
+
+  // The independent check: the lift brings pairs that were 2 or more apart at the start into
+  // contact from a lift of 2 to 7 (the cover's top, hole walls and bottom through the flange).
+  const std::vector<double> bad = violations(g, 560);
+  ASSERT_FALSE(bad.empty()) << "the fixture must pass through material";
+  EXPECT_LE(bad.front(), 2.0 + 0.2);
+  EXPECT_GE(bad.back(), 5.0);
+
+  // The old rule certifies that lift: it is the hole.
+  const TrianglePairs touching =
+      proximity_pairs(s.obstacle_tree, Pose{}, s.body_tree, Pose{}, {.threshold = kThreshold}).pairs;
+  const TrianglePairs old_rule = cross_product_of(touching, g.obstacles.triangles.size(), g.body.triangles.size());
+  EXPECT_GT(old_rule.size(), touching.size());
+  auto distance_without = [&](const TrianglePairs& exempt) {
+    return [&s, &exempt](const Pose& q, double enough) {
+      return distance(s.obstacle_tree, Pose{}, s.body_tree, q, {.enough = enough, .exclude = &exempt}).distance;
+    };
+  };
+  const Motion motion{lift.poses[0], lift.poses[1], s.reference, s.radius};
+  EXPECT_TRUE(certify_motion(motion, distance_without(old_rule), {.margin = kClearance}).clear())
+      << "with every contact triangle × every contact triangle exempt the lift passes";
+
+  // The per-pair rule refuses it, at a height where the brute force finds violations.
+  const Certificate per_pair = certify_motion(motion, distance_without(touching), {.margin = kClearance});
+  ASSERT_EQ(per_pair.status, MotionStatus::blocked);
+  EXPECT_GE(kLift * per_pair.t_blocked, bad.front() - 0.1);
+  EXPECT_LE(kLift * per_pair.t_blocked, bad.back() + 0.1);
+
+  // So do the library's own final pass (swept check) and the planner.
+  const PathCheckResult checked = check_path(g.problem, s, lift);
+  EXPECT_FALSE(checked.valid) << checked.message;
+  ASSERT_TRUE(checked.first_bad_segment.has_value());
+  EXPECT_EQ(*checked.first_bad_segment, 0u);
+  EXPECT_EQ(checked.exempt_pairs, touching.size());
+  const PlanResult r = plan(g.problem, s);
+  EXPECT_FALSE(r.solved()) << "the cover is clamped by the flange: " << r.message;
+  EXPECT_TRUE(r.path.poses.empty());
+}
+
+TEST(ExemptionPairs, WithoutTheFlangeTheCoverLifts) {
+  // The same cover without the bearing flange lifts off the base and up the shaft: the refusal
+  // above is the flange's doing, not a rule that refuses everything.
+  GeneratedProblem g = cover_under_bearing();
+  g.obstacles.triangles.resize(24);  // base and shaft
+  const PlanScene s = scene_of(g);
+  const Path lift{{Pose{}, Pose::from_translation(Vec3(0, 0, kLift))}};
+  EXPECT_TRUE(violations(g, 560).empty());
+  const PathCheckResult checked = check_path(g.problem, s, lift);
+  EXPECT_TRUE(checked.valid) << checked.message;
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  check_independently(s, g.problem, r);
+}
+
+}  // namespace
+}  // namespace swept
