@@ -38,9 +38,9 @@ using detail::PlanContext;
 
 // Expansions the grid's levels may spend without running out of nodes before the trees take
 // over. The axis-aligned narrow passages it is good at are solved within it (the box problems
-// and the hooks at levels 0–1); budgets of 10000 and 60000 held the trees back by 1.2–2.8 s
-// on the house, the cubicles and the traps (docs/planner.md).
-constexpr std::size_t kGridBudget = 2000;
+// and the hooks at level 0 in a few dozen expansions, where the trees take 0.7 s); larger
+// budgets only held the trees back (2000: 0.1–3 s more on the house, the cubicles, the spiral).
+constexpr std::size_t kGridBudget = 500;
 
 // Coordinates far beyond the scene lose the precision the distance bounds rely on (a query at
 // 1e100 visits every pair and takes seconds, so no time limit holds): the bounds, the start,

@@ -289,7 +289,7 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint6
   // Every fourth sample moves along one axis or turns in place (`lattice_move`).
   const Pose aim = index % 4 == 3 ? lattice_move(mine[from], target, index / 4 % 2 == 1) : target;
   if (!extend(mine[from], from, aim, out.grown, reached, out.edges)) return out;
-  reach_for(grow, out);
+  reach_for(grow, out, kConnectSteps);
   return out;
 }
 
@@ -325,11 +325,14 @@ TreeSearch::Attempt TreeSearch::seed_attempt(int grow, int orientation, int axis
     }
     if (!done) break;  // the turn or the pull stopped short: what grew stays
   }
-  if (!out.grown.empty()) reach_for(grow, out);
+  // The other tree does not reach for a seed: the seeds of both trees lie on the same few lines,
+  // and the samples' reaching connects them (reaching for every seed cost the house and the
+  // cubicles 2–3 times the search time).
+  if (!out.grown.empty()) reach_for(grow, out, 0);
   return out;
 }
 
-void TreeSearch::reach_for(int grow, Attempt& out) const {
+void TreeSearch::reach_for(int grow, Attempt& out, int max_steps) const {
   bool reached = false;
   const TreeNode& grown = out.grown.back();
   if (region_ && grow == 0) {
@@ -341,7 +344,7 @@ void TreeSearch::reach_for(int grow, Attempt& out) const {
   if (other.empty()) return;
   std::int32_t parent = nearest(other, grown.pose);
   TreeNode at = other[parent];
-  for (int k = 0; k < kConnectSteps && !context_.out_of_time(); ++k) {
+  for (int k = 0; k < max_steps && !context_.out_of_time(); ++k) {
     const std::size_t before = out.chain.size();
     const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges);
     if (reached) {

@@ -96,8 +96,8 @@ class TreeSearch {
   /// `orientation` (`lattice_rotation`) of the root's rotation, then a pull along world axis
   /// `axis` (+x, −x, +y, −y, +z, −z) toward the bounds, as far as it is free.
   Attempt seed_attempt(int grow, int orientation, int axis) const;
-  /// The other tree reaches for the last node `out` grew, step after step.
-  void reach_for(int grow, Attempt& out) const;
+  /// The other tree reaches for the last node `out` grew, step after step (at most `max_steps`).
+  void reach_for(int grow, Attempt& out, int max_steps) const;
   /// Seeds per tree with a root of its own: 24 orientations × 6 axes.
   static constexpr std::uint64_t kSeeds = 144;
   /// Where a lattice move from `from` toward `target` aims: the same reference point turned to

@@ -184,7 +184,7 @@ TEST(TreeSearch, SameTreesAtAnyThreadCount) {
 TEST(TreeSearch, GoalRegionTreeGrowsFromSamplesInTheRegion) {
   // The cage without its tube, with a goal region (outside the obstacles' box): the goal tree's
   // roots are free samples in the region.
-  auto g = rod_in_cage(2.3, 0.0);
+  auto g = rod_in_cage(3.0, 0.0);
   g.problem.goal.reset();
   g.problem.goal_outside = true;
   PhaseRig rig(std::move(g), 120.0);
