@@ -1,20 +1,12 @@
 // The multi-resolution grid (grid.h).
 #include "grid.h"
 
+#include "rotation_vector.h"
 #include "swept/geometry/assert.h"
 
 #include <numbers>
 
 namespace swept::detail {
-namespace {
-
-Mat3 exp_rotation(const Vec3& w) {
-  const double angle = w.norm();
-  if (angle == 0.0) return Mat3::Identity();
-  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
-}
-
-}  // namespace
 
 Grid::Grid(const SearchSpace& space, const Pose& problem_start, const Pose& anchor, double clearance,
            double scene_size)

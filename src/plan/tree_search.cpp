@@ -1,6 +1,7 @@
 // Phase 3: trees from both ends toward a Halton sequence (tree_search.h).
 #include "tree_search.h"
 
+#include "rotation_vector.h"
 #include "swept/geometry/assert.h"
 
 #include <tbb/parallel_for.h>
@@ -19,16 +20,6 @@ double radical_inverse(std::uint64_t i, std::uint64_t base) {
   return out;
 }
 
-Mat3 exp_rotation(const Vec3& w) {
-  const double angle = w.norm();
-  if (angle == 0.0) return Mat3::Identity();
-  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
-}
-
-Vec3 rotation_vector(const Mat3& r) {
-  const Eigen::AngleAxisd turn(r);
-  return turn.angle() * turn.axis();
-}
 
 // Rounds in which the other tree reaches for a new node take at most this many steps.
 constexpr int kConnectSteps = 64;
