@@ -56,6 +56,10 @@ struct PyBvh {
   double build_ms = 0.0;
 };
 
+/// A swept.Mesh over `data`: `.vertices` a read-only view onto the soup (three vertices per
+/// triangle), `.faces` arange(3 M).reshape(M, 3).
+PyMesh mesh_from_data(std::shared_ptr<const MeshData> data);
+
 /// Poses given as None (identity), one pose ((7,) or (4, 4)) or K poses ((K, 7) or (K, 4, 4)).
 /// (x, y, z, qx, qy, qz, qw): translation then quaternion, scalar last (OMPL's .path order);
 /// the quaternion need not be normalised. 4×4: homogeneous matrices, rotation orthonormal.
@@ -90,5 +94,6 @@ pyb::array_t<T> new_array(std::vector<pyb::ssize_t> shape) {
 void bind_mesh(pyb::module_& m);
 void bind_query(pyb::module_& m);
 void bind_plan(pyb::module_& m);
+void bind_assembly(pyb::module_& m);
 
 }  // namespace swept::py

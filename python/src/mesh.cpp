@@ -38,6 +38,12 @@ PyMesh mesh_from_model(ImportedModel model) {
   data->unit = model.unit;
   data->degenerate_triangles = model.degenerate_triangles;
   data->warnings = std::move(model.warnings);
+  return mesh_from_data(std::move(data));
+}
+
+}  // namespace
+
+PyMesh mesh_from_data(std::shared_ptr<const MeshData> data) {
   PyMesh m;
   m.data = data;
   const auto count = static_cast<pyb::ssize_t>(data->soup.triangles.size());
@@ -49,6 +55,8 @@ PyMesh mesh_from_model(ImportedModel model) {
   m.faces = faces;
   return m;
 }
+
+namespace {
 
 PyMesh mesh_load(const std::filesystem::path& path, const std::string& unit, std::optional<double> deflection,
                  std::optional<std::string> file_unit, std::optional<double> angular_deflection,

@@ -8,5 +8,6 @@ PYBIND11_MODULE(_swept, m) {
   swept::py::bind_mesh(m);
   swept::py::bind_query(m);
   swept::py::bind_plan(m);
+  swept::py::bind_assembly(m);
   m.attr("__version__") = "0.1.0";
 }

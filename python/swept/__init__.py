@@ -9,6 +9,7 @@ certified, deterministic 6-DOF disassembly planner, from Python with NumPy array
     r = swept.distance(ta, tb, None, poses)         # r.distance (1000,), r.point_a (1000, 3), ...
     res = swept.plan(swept.Problem.load("problem.toml"), time_limit=30)
     res.path                                        # (P, 7): x, y, z, qx, qy, qz, qw
+    seq = swept.disassemble("gearbox.toml")         # seq.complete, seq.sequence[k].parts, .path
 
 Poses are arrays of shape (7,) or (K, 7) -- translation then quaternion (x, y, z, qx, qy, qz, qw),
 scalar last as in OMPL's .path files, not necessarily normalised -- or (4, 4) / (K, 4, 4)
@@ -20,21 +21,23 @@ docs/python.md.
 """
 from __future__ import annotations
 
+import os
 from typing import Any, NamedTuple, Optional
 
 import numpy as np
 
-from ._swept import BVH, Error, Mesh, Problem, Scene, __version__
+from ._swept import BVH, Assembly, Error, Mesh, Problem, Scene, __version__
 from . import _swept
 
-for _cls in (BVH, Error, Mesh, Problem, Scene):
+for _cls in (BVH, Assembly, Error, Mesh, Problem, Scene):
     _cls.__module__ = "swept"  # swept.Error in tracebacks, not swept._swept.Error
 del _cls
 
 __all__ = [
-    "BVH", "Error", "Mesh", "Problem", "Scene", "PlanResult",
+    "Assembly", "BVH", "Error", "Mesh", "Problem", "Scene", "PlanResult",
     "DistanceResult", "CollideResult", "ToleranceResult", "MotionResult",
-    "distance", "collide", "tolerance", "motion_clearance", "plan", "__version__",
+    "DisassemblyResult", "DisassemblyStep", "Interference",
+    "distance", "collide", "tolerance", "motion_clearance", "plan", "disassemble", "__version__",
 ]
 
 
@@ -113,6 +116,50 @@ class PlanResult(NamedTuple):
         return int(self.path.shape[0])
 
 
+class Interference(NamedTuple):
+    """Two parts overlapping by more than the mating tolerance where they are mounted."""
+    parts: tuple                #: (name_a, name_b), in the assembly's order
+    depth: float                #: the deepest intersecting triangle pair's overlap
+    extent: float               #: diagonal of the box of the crossing points
+    triangle_pairs: int         #: intersecting triangle pairs deeper than the tolerance
+
+
+class DisassemblyStep(NamedTuple):
+    """One entry of a disassembly sequence: a removal (a part, or a group of touching parts moving
+    as one) or, at the end, a part that stays with what blocks it."""
+    round: int                  #: 1-based; blocked parts: the last round
+    parts: tuple                #: the part's name, or the group's names
+    removed: bool
+    method: Optional[str]       #: "pull" (straight) | "plan" (the planner); None when blocked
+    direction: Optional[np.ndarray]  #: (3,) unit direction of a pull, else None
+    distance: float             #: how far a pull goes (to outside the remaining parts' box)
+    path: np.ndarray            #: (P, 7) poses of the part's frame (identity = mounted), x, y, z, qx, qy, qz, qw
+    reference: np.ndarray       #: (3,) the point the path's rotations interpolate about
+    blockers: tuple             #: blocked: every part that blocks some direction on its own
+    blocking: list              #: blocked: (direction (3,), blocker names) per direction tried
+    time_ms: float              #: time of the round's attempts on this part (varies run to run)
+
+
+class DisassemblyResult(NamedTuple):
+    """What swept.disassemble() found: the fields of `swept disassemble --json`."""
+    complete: bool              #: every movable part comes out
+    unit: str
+    parts: tuple                #: every part's name, in the assembly's order
+    fixed: tuple                #: the parts never moved
+    clearance: float
+    tolerance: float            #: the mating tolerance used
+    interferences: list         #: [Interference], checked first
+    sequence: list              #: [DisassemblyStep]: removals in order, then the parts that stay
+    warnings: list
+    time_ms: dict               #: build, interference, sequence
+    distance_queries: int
+
+    @property
+    def order(self) -> list:
+        """The removed parts' names in removal order (a group's names together)."""
+        return [n for s in self.sequence if s.removed for n in s.parts]
+
+
 def _check_tree(t: Any, name: str) -> None:
     if not isinstance(t, BVH):
         raise TypeError(f"{name}: a swept.BVH is needed, not {type(t).__name__}")
@@ -174,3 +221,31 @@ def plan(problem: Problem, time_limit: Optional[float] = None, threads: Optional
     if scene is not None and not isinstance(scene, Scene):
         raise TypeError(f"scene: a swept.Scene is needed, not {type(scene).__name__}")
     return PlanResult(**_swept._plan(problem, time_limit, threads, scene))
+
+
+def disassemble(assembly: "Assembly | str | os.PathLike", *, clearance: float = 0.01,
+                tolerance: Optional[float] = None, jobs: int = 0, plan_time: float = 2.0,
+                subassemblies: bool = True, fixed: Optional[Any] = None) -> DisassemblyResult:
+    """Takes a whole assembly apart, as `swept disassemble` does (docs/assembly.md).
+
+    assembly: a swept.Assembly, or a path read with Assembly.load(path) (TOML assembly file,
+    folder of placed meshes, STEP / IGES / BREP with several solids). Interferences are reported
+    first; then, round by round, one part (or group of touching parts) leaves by a certified
+    straight pull -- the planner when none is clear (plan_time seconds per attempt; 0: never) --
+    and the parts that stay are reported with their blockers. clearance: every pair that is not
+    a mate keeps more than this; tolerance: how far mated faces may overlap, and the interference
+    threshold (default: twice the assembly's deflection). jobs: threads (0: all cores; the same
+    result at any count). fixed: part names or indices never moved (default: the parts marked
+    fixed, else the largest). Parts that stay are a result (complete False), not an error; bad
+    input raises swept.Error. The GIL is released while it runs."""
+    if not isinstance(assembly, Assembly):
+        if not isinstance(assembly, (str, os.PathLike)):
+            raise TypeError(f"assembly: a swept.Assembly or a path is needed, not {type(assembly).__name__}")
+        assembly = Assembly.load(assembly)
+    if fixed is not None and isinstance(fixed, (str, int)):
+        fixed = [fixed]
+    d = _swept._disassemble(assembly, clearance, tolerance, jobs, plan_time, subassemblies,
+                            None if fixed is None else list(fixed))
+    d["interferences"] = [Interference(**f) for f in d["interferences"]]
+    d["sequence"] = [DisassemblyStep(**s) for s in d["sequence"]]
+    return DisassemblyResult(**d)

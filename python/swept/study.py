@@ -1,4 +1,4 @@
-"""Many independent planning jobs over a Dask cluster, or serially: ``python3 -m swept.study``.
+"""Many independent planning and disassembly jobs over a Dask cluster, or serially: ``python3 -m swept.study``.
 
     python3 -m swept.study STUDY.toml [--scheduler tcp://HOST:8786 | --workers N | --serial]
                                       [-o results.csv] [--quiet]
@@ -14,12 +14,24 @@ A study file names problems and the variants to sweep; every combination is one 
     file = "problems/a.toml"    # relative to the study file; or `glob = "problems/*.toml"`
     name = "a"                  # optional, default: the path relative to the study file, no extension
 
+    [[assembly]]                # optional: whole assemblies taken apart (swept.disassemble)
+    file = "gearbox/assembly.toml"   # a TOML assembly file, a folder or a STEP file; or `glob`
+    name = "gearbox"            # optional, as for problems
+
     [variants]                  # each optional; a list of values, or one value
     fitter = ["inertia", "pqp"]
     clearance = [0.5, 1.0]      # overrides the problem's [planner] clearance
     time_limit = [30.0]
 
-Jobs are numbered problem by problem, then fitter, clearance, time limit (the order above). The
+A study needs at least one [[problem]] or [[assembly]]. For an assembly, `clearance` is the
+clearance of swept.disassemble (default 0.01) and `time_limit` its seconds per planner attempt
+(plan_time, default 2); `fitter` does not apply (its trees are always built with the default
+fitter), so an assembly is not repeated per fitter. Its row's `status` is `complete` or
+`incomplete`, `solved` whether every movable part came out, `order` the parts' removal order,
+`path_hash` a hash of the order and every removal path, `waypoints` the poses of all paths.
+
+Jobs are numbered problem by problem, then fitter, clearance, time limit (the order above), then
+the assemblies by clearance and time limit. The
 result table has one row per job, sorted by job id: the job's settings, the planner's outcome
 and figures, and -- in the columns listed in VOLATILE_COLUMNS -- timings, the worker and whether
 the worker's cached scene was reused. Every other column is identical, row for row, between a
@@ -33,6 +45,7 @@ from __future__ import annotations
 import argparse
 import csv
 import glob as globmod
+import hashlib
 import io
 import itertools
 import json
@@ -46,6 +59,8 @@ import tomllib
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Optional, Sequence
 
+import numpy as np
+
 import swept
 
 __all__ = ["Study", "Job", "COLUMNS", "VOLATILE_COLUMNS", "load_study", "run_study", "run_job",
@@ -53,10 +68,10 @@ __all__ = ["Study", "Job", "COLUMNS", "VOLATILE_COLUMNS", "load_study", "run_stu
 
 #: Every column of the result table, in order.
 COLUMNS: tuple[str, ...] = (
-    "job", "problem", "file", "fitter", "clearance", "time_limit", "threads",
+    "job", "kind", "problem", "file", "fitter", "clearance", "time_limit", "threads",
     "status", "solved", "message", "waypoints", "path_length", "translation_length",
     "rotation_length_rad", "min_clearance", "path_hash", "distance_queries", "nodes_checked",
-    "edges_checked", "level",
+    "edges_checked", "level", "parts", "removed", "order",
     "load_ms", "build_ms", "search_ms", "plan_ms", "wall_ms", "cpu_ms", "worker", "scene_cached",
 )
 #: Columns that differ between runs (timings, placement); left out of the equality of tables.
@@ -68,14 +83,15 @@ _VARIANT_KEYS = ("fitter", "clearance", "time_limit")
 
 @dataclass(frozen=True)
 class Job:
-    """One plan: a problem file with the settings of one variant."""
+    """One plan (a problem file) or one disassembly (an assembly) with the settings of one variant."""
     id: int
-    problem: str          #: the problem's name in the study
-    file: str             #: absolute path of the problem file
-    fitter: Optional[str]  #: None: the problem's own
+    problem: str          #: the problem's (or assembly's) name in the study
+    file: str             #: absolute path of the problem file, assembly file or folder
+    fitter: Optional[str]  #: None: the problem's own (always None for assemblies)
     clearance: Optional[float]
-    time_limit: float
+    time_limit: float     #: nan: the problem's own (assemblies: the default plan_time)
     threads: int
+    kind: str = "plan"    #: "plan" | "disassemble"
 
 
 @dataclass
@@ -110,10 +126,10 @@ def load_study(path: str | os.PathLike) -> Study:
     except tomllib.TOMLDecodeError as e:
         raise StudyError(f"{path}: {e}") from None
     base = os.path.dirname(os.path.abspath(path))
-    known = {"study", "problem", "variants"}
+    known = {"study", "problem", "assembly", "variants"}
     for key in doc:
         if key not in known:
-            raise StudyError(f"{path}: unknown key '{key}' (study, problem, variants)")
+            raise StudyError(f"{path}: unknown key '{key}' (study, problem, assembly, variants)")
     head = doc.get("study", {})
     if not isinstance(head, dict):
         raise StudyError(f"{path}: 'study' must be a table")
@@ -126,30 +142,37 @@ def load_study(path: str | os.PathLike) -> Study:
         raise StudyError(f"{path}: study.threads must be an integer >= 0 (0: all cores)")
     default_limit = head.get("time_limit")
 
-    problems: list[tuple[str, str]] = []
-    entries = doc.get("problem", [])
-    if not isinstance(entries, list) or not entries:
-        raise StudyError(f"{path}: no [[problem]] entries")
-    for i, entry in enumerate(entries):
-        where = f"problem[{i}]"
-        if not isinstance(entry, dict):
-            raise StudyError(f"{path}: {where} must be a table")
-        for key in entry:
-            if key not in ("file", "glob", "name"):
-                raise StudyError(f"{path}: unknown key '{where}.{key}' (file, glob, name)")
-        if ("file" in entry) == ("glob" in entry):
-            raise StudyError(f"{path}: {where} needs one of 'file' or 'glob'")
-        if "file" in entry:
-            f = os.path.normpath(os.path.join(base, str(entry["file"])))
-            problems.append((str(entry["name"]) if "name" in entry else _default_name(base, f), f))
-        else:
-            matches = sorted(globmod.glob(os.path.join(base, str(entry["glob"]))))
-            if not matches:
-                raise StudyError(f"{path}: {where}.glob '{entry['glob']}' matches no file")
-            if "name" in entry:
-                raise StudyError(f"{path}: {where}: 'name' goes with 'file', not 'glob'")
-            for f in matches:
-                problems.append((_default_name(base, f), os.path.normpath(f)))
+    def entries_of(table: str) -> list[tuple[str, str]]:
+        out: list[tuple[str, str]] = []
+        entries = doc.get(table, [])
+        if not isinstance(entries, list):
+            raise StudyError(f"{path}: '{table}' must be an array of tables ([[{table}]])")
+        for i, entry in enumerate(entries):
+            where = f"{table}[{i}]"
+            if not isinstance(entry, dict):
+                raise StudyError(f"{path}: {where} must be a table")
+            for key in entry:
+                if key not in ("file", "glob", "name"):
+                    raise StudyError(f"{path}: unknown key '{where}.{key}' (file, glob, name)")
+            if ("file" in entry) == ("glob" in entry):
+                raise StudyError(f"{path}: {where} needs one of 'file' or 'glob'")
+            if "file" in entry:
+                f = os.path.normpath(os.path.join(base, str(entry["file"])))
+                out.append((str(entry["name"]) if "name" in entry else _default_name(base, f), f))
+            else:
+                matches = sorted(globmod.glob(os.path.join(base, str(entry["glob"]))))
+                if not matches:
+                    raise StudyError(f"{path}: {where}.glob '{entry['glob']}' matches no file")
+                if "name" in entry:
+                    raise StudyError(f"{path}: {where}: 'name' goes with 'file', not 'glob'")
+                for f in matches:
+                    out.append((_default_name(base, f), os.path.normpath(f)))
+        return out
+
+    problems = entries_of("problem")
+    assemblies = entries_of("assembly")
+    if not problems and not assemblies:
+        raise StudyError(f"{path}: no [[problem]] or [[assembly]] entries")
 
     variants = doc.get("variants", {})
     if not isinstance(variants, dict):
@@ -177,6 +200,11 @@ def load_study(path: str | os.PathLike) -> Study:
         study.jobs.append(Job(id=len(study.jobs), problem=pname, file=pfile, fitter=fitter,
                               clearance=None if clearance is None else float(clearance),
                               time_limit=float(limit) if limit is not None else math.nan, threads=threads))
+    for (aname, afile), clearance, limit in itertools.product(assemblies, clearances, limits):
+        study.jobs.append(Job(id=len(study.jobs), problem=aname, file=afile, fitter=None,
+                              clearance=None if clearance is None else float(clearance),
+                              time_limit=float(limit) if limit is not None else math.nan, threads=threads,
+                              kind="disassemble"))
     return study
 
 
@@ -189,6 +217,7 @@ _cache_lock = threading.Lock()
 _problems: dict[tuple, swept.Problem] = {}
 _scenes: dict[tuple, swept.Scene] = {}  # in order of last use
 _scene_locks: dict[tuple, threading.Lock] = {}
+_assemblies: dict[tuple, swept.Assembly] = {}
 
 
 def _file_key(file: str) -> tuple:
@@ -222,11 +251,49 @@ def clear_cache() -> None:
     with _cache_lock:
         _problems.clear()
         _scenes.clear()
+        _assemblies.clear()
         _scene_locks.clear()
 
 
 def _fmt_float(x: Optional[float]) -> Optional[float]:
     return None if x is None else float(x)
+
+
+def _sequence_hash(result: swept.DisassemblyResult) -> str:
+    """16 hex digits over the removal order and every removal path's poses (exact doubles)."""
+    h = hashlib.sha256()
+    for step in result.sequence:
+        h.update(("+".join(step.parts) + ("|removed" if step.removed else "|blocked") + "\n").encode())
+        h.update(np.ascontiguousarray(step.path, dtype="<f8").tobytes())
+    return h.hexdigest()[:16]
+
+
+def _run_disassembly(job: Job, row: dict) -> None:
+    try:
+        key = _file_key(job.file)
+    except OSError as e:
+        raise swept.Error(f"{job.file}: cannot open the assembly ({e.strerror})") from None
+    with _cache_lock:
+        assembly = _assemblies.get(key)
+    cached = assembly is not None
+    if assembly is None:
+        assembly = swept.Assembly.load(job.file)
+        with _cache_lock:
+            _assemblies[key] = assembly
+    clearance = 0.01 if job.clearance is None else job.clearance
+    plan_time = 2.0 if math.isnan(job.time_limit) else job.time_limit
+    row.update(clearance=clearance, time_limit=plan_time, scene_cached=cached)
+    r = swept.disassemble(assembly, clearance=clearance, plan_time=plan_time, jobs=job.threads)
+    removed = [s for s in r.sequence if s.removed]
+    stay = [n for s in r.sequence if not s.removed for n in s.parts]
+    message = (f"{len(r.order)} of {len(r.parts) - len(r.fixed)} movable parts come out" +
+               (f"; {', '.join(stay)} stay" if stay else "") +
+               (f"; {len(r.interferences)} interferences" if r.interferences else ""))
+    row.update(status="complete" if r.complete else "incomplete", solved=r.complete, message=message,
+               waypoints=int(sum(s.path.shape[0] for s in removed)), path_hash=_sequence_hash(r),
+               distance_queries=r.distance_queries, parts=len(r.parts), removed=len(r.order),
+               order=" > ".join("+".join(s.parts) for s in removed), build_ms=r.time_ms["build"],
+               search_ms=r.time_ms["sequence"], plan_ms=sum(r.time_ms.values()))
 
 
 def run_job(job: Job) -> dict:
@@ -235,9 +302,17 @@ def run_job(job: Job) -> dict:
     'error' and the message, not an exception."""
     t0, c0 = time.perf_counter(), time.process_time()
     row: dict[str, Any] = {c: None for c in COLUMNS}
-    row.update(job=job.id, problem=job.problem, file=job.file, fitter=job.fitter, clearance=job.clearance,
-               time_limit=None if math.isnan(job.time_limit) else job.time_limit, threads=job.threads,
-               worker=f"{socket.gethostname()}:{os.getpid()}")
+    row.update(job=job.id, kind=job.kind, problem=job.problem, file=job.file, fitter=job.fitter,
+               clearance=job.clearance, time_limit=None if math.isnan(job.time_limit) else job.time_limit,
+               threads=job.threads, worker=f"{socket.gethostname()}:{os.getpid()}")
+    if job.kind == "disassemble":
+        try:
+            _run_disassembly(job, row)
+        except swept.Error as e:
+            row.update(status="error", solved=False, message=str(e))
+        row["wall_ms"] = (time.perf_counter() - t0) * 1e3
+        row["cpu_ms"] = (time.process_time() - c0) * 1e3
+        return row
     try:
         try:
             key = _file_key(job.file)
@@ -457,13 +532,15 @@ def _write_atomically(path: str, text: str) -> None:
 def _summary(rows: Sequence[dict], wall: float) -> str:
     solved = sum(1 for r in rows if r["solved"])
     errors = sum(1 for r in rows if r["status"] == "error")
+    # An assembly counts as solved when it came apart completely.
     return f"{len(rows)} jobs: {solved} solved, {len(rows) - solved - errors} without a path, {errors} errors, {wall:.2f} s"
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     ap = argparse.ArgumentParser(
         prog="python3 -m swept.study",
-        description="Run a study (problems x variants, one plan per job) on a Dask cluster or serially; "
+        description="Run a study (problems and assemblies x variants, one plan or disassembly per job) on a "
+                    "Dask cluster or serially; "
                     "write the result table as CSV and JSON.")
     ap.add_argument("study", help="the study file (TOML)")
     where = ap.add_mutually_exclusive_group()

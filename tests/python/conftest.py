@@ -129,3 +129,26 @@ def py_reference():
     if not ref or not os.path.exists(ref):
         pytest.skip("SWEPT_PY_REFERENCE is not set (run through ctest)")
     return ref
+
+
+def write_cup_assembly(folder, name="cupset", peg_bottom=0.0, lid=True):
+    """A TOML assembly: a cup (floor z in [-2, 0] and four walls up to z = 10, 20 x 20 inside;
+    fixed), a 4 x 4 peg standing on the floor at the centre (z in [peg_bottom, 6]) and a lid
+    resting on the walls (z in [10, 12]). The peg's only way out is up, through the lid: the lid
+    must come out first. peg_bottom < 0 sinks the peg into the floor (an interference)."""
+    os.makedirs(folder, exist_ok=True)
+    cup = merge(box((-12, -12, -2), (12, 12, 0)),
+                box((-12, -12, 0), (-10, 12, 10)), box((10, -12, 0), (12, 12, 10)),
+                box((-10, -12, 0), (10, -10, 10)), box((-10, 10, 0), (10, 12, 10)))
+    write_stl(os.path.join(folder, f"{name}_cup.stl"), *cup, "cup")
+    write_stl(os.path.join(folder, f"{name}_peg.stl"), *box((-2, -2, peg_bottom), (2, 2, 6)), "peg")
+    text = f'unit = "mm"\n\n[[part]]\nfile = "{name}_cup.stl"\nname = "cup"\nfixed = true\n\n' \
+           f'[[part]]\nfile = "{name}_peg.stl"\nname = "peg"\n'
+    if lid:
+        write_stl(os.path.join(folder, f"{name}_lid.stl"), *box((-12, -12, 0), (12, 12, 2)), "lid")
+        # the lid's file is at z in [0, 2]: the pose puts it on the walls
+        text += f'\n[[part]]\nfile = "{name}_lid.stl"\nname = "lid"\npose = {{ translation = [0, 0, 10] }}\n'
+    path = os.path.join(folder, f"{name}.toml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path

@@ -415,11 +415,11 @@ def test_the_stubs_name_what_the_module_has():
             names[node.name] = set()
     module = {n for n in dir(swept._swept) if not n.startswith("__")}
     assert set(names) | {"__version__"} >= module and set(names) <= module
-    for cls in ("Mesh", "BVH", "Problem", "Scene"):
+    for cls in ("Mesh", "BVH", "Problem", "Scene", "Assembly"):
         members = {n for n in dir(getattr(swept, cls)) if not n.startswith("_") or n in ("__len__", "__init__")}
         assert members - {"__init__"} <= names[cls], (cls, members - names[cls])
         assert names[cls] - {"__init__", "__len__", "__copy__", "__deepcopy__"} <= members, cls
-    for fn in ("distance", "collide", "tolerance", "motion_clearance", "plan"):
+    for fn in ("distance", "collide", "tolerance", "motion_clearance", "plan", "disassemble"):
         assert getattr(swept, fn).__doc__
 
 

@@ -15,7 +15,7 @@ import pytest
 
 import swept
 from swept import study as st
-from conftest import write_problem
+from conftest import write_cup_assembly, write_problem
 
 
 def write_study(folder):
@@ -165,3 +165,42 @@ def test_command_line_serial_and_bad_input(tmp_path):
     missing.write_text('[[problem]]\nfile = "nowhere.toml"\n')
     rows = st.run_study(st.load_study(str(missing)), serial=True, progress=False)
     assert rows[0]["status"] == "error" and "nowhere.toml" in rows[0]["message"]
+
+
+def test_assemblies_in_a_study(tmp_path):
+    """[[assembly]] entries: one disassembly per (clearance, time limit), not per fitter; the order
+    is the one seen by hand (the lid before the peg); a local two-worker cluster gives the serial
+    table; an assembly that does not load is an error row."""
+    write_problem(str(tmp_path / "problems"), name="cup0", time_limit=60.0)
+    write_cup_assembly(str(tmp_path / "assemblies"))
+    path = tmp_path / "study.toml"
+    path.write_text(textwrap.dedent("""\
+        [[problem]]
+        file = "problems/cup0.toml"
+        [[assembly]]
+        file = "assemblies/cupset.toml"
+        name = "cupset"
+        [[assembly]]
+        file = "assemblies/nowhere.toml"
+        [variants]
+        fitter = ["inertia", "pqp"]
+        clearance = [0.25, 9.0]        # 9: nothing keeps 9 mm from the cup's walls
+        time_limit = 1.0
+        """))
+    s = st.load_study(str(path))
+    assert [(j.kind, j.problem, j.fitter, j.clearance) for j in s.jobs] == [
+        ("plan", "problems/cup0", "inertia", 0.25), ("plan", "problems/cup0", "inertia", 9.0),
+        ("plan", "problems/cup0", "pqp", 0.25), ("plan", "problems/cup0", "pqp", 9.0),
+        ("disassemble", "cupset", None, 0.25), ("disassemble", "cupset", None, 9.0),
+        ("disassemble", "assemblies/nowhere", None, 0.25), ("disassemble", "assemblies/nowhere", None, 9.0)]
+    s.jobs = [j for j in s.jobs if j.kind == "disassemble"]
+    serial = st.run_study(s, serial=True, progress=False)
+    ok, tight, missing, _ = serial
+    assert (ok["kind"], ok["status"], ok["solved"], ok["order"], ok["parts"], ok["removed"]) == \
+        ("disassemble", "complete", True, "lid > peg", 3, 2)
+    assert ok["time_limit"] == 1.0 and ok["fitter"] is None and len(ok["path_hash"]) == 16
+    assert tight["status"] == "incomplete" and not tight["solved"] and "stay" in tight["message"]
+    assert missing["status"] == "error" and "nowhere.toml" in missing["message"]
+    st.clear_cache()
+    local = st.run_study(s, workers=2, progress=False)
+    assert st.deterministic_rows(local) == st.deterministic_rows(serial)
