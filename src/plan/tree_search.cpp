@@ -27,6 +27,8 @@ constexpr int kConnectSteps = 64;
 constexpr int kSlides = 8;
 // Roots of a goal region's tree.
 constexpr std::size_t kGoalRoots = 16;
+// Steps past a node's free ball are certified only when a path joining the ends uses them.
+constexpr bool kLazyEdges = true;
 
 }  // namespace
 
@@ -146,6 +148,7 @@ std::int32_t TreeSearch::nearest(const std::vector<TreeNode>& tree, const Pose& 
   std::int32_t best = -1;
   double best_length = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < tree.size(); ++i) {
+    if (tree[i].dead) continue;
     const TreeNode& n = tree[i];
     const double moved = (n.point - point).norm();
     if (moved >= best_length) continue;
@@ -176,7 +179,18 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
     const Pose q = whole ? target : motion.at(s / length);
     if (inside(q)) {
       const double dq = check.clearance(q, margin + step_);
-      if (dq > margin) {
+      if (dq > margin && kLazyEdges && s > bubble) {
+        // Past the free ball: the edge is certified later, if a path uses it. Its midpoint is
+        // checked now (a step across a thin wall has free ends).
+        const Pose mid = motion.at(0.5 * s / length);
+        if (check.clearance(mid, margin + 0.5 * s) > margin) {
+          reached = whole;
+          TreeNode node = make_node(q, dq, -1);
+          node.certified = false;
+          return node;
+        }
+        s *= 0.5;
+      } else if (dq > margin) {
         const Certificate c = check.certify(from.pose, from.distance, q, dq);
         if (c.clear()) {
           reached = whole;
@@ -203,7 +217,7 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
                         bool& reached, std::size_t& edges) const {
   std::optional<TreeNode> next = step_toward(from, target, reached);
   if (next) {
-    ++edges;
+    edges += next->certified;
     next->parent = parent;
     chain.push_back(*next);
     return true;
@@ -215,14 +229,14 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
   for (int k = 0; k < kSlides && !context_.out_of_time(); ++k) {
     std::optional<TreeNode> slid = slide(at, target);
     if (!slid) break;
-    ++edges;
+    edges += slid->certified;
     slid->parent = parent;
     parent = -2 - static_cast<std::int32_t>(chain.size());
     chain.push_back(*slid);
     at = *slid;
     // Free again toward the target?
     if (std::optional<TreeNode> direct = step_toward(at, target, reached)) {
-      ++edges;
+      edges += direct->certified;
       direct->parent = parent;
       chain.push_back(*direct);
       return true;
@@ -261,6 +275,11 @@ std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& targ
     if (!inside(q)) continue;
     const double dq = check.clearance(q, margin + step_);
     if (dq <= margin) continue;
+    if (kLazyEdges && s > 0.9 * (from.distance - margin)) {
+      TreeNode node = make_node(q, dq, -1);
+      node.certified = false;
+      return node;
+    }
     if (check.certify(from.pose, from.distance, q, dq).clear()) return make_node(q, dq, -1);
   }
   return std::nullopt;
@@ -307,7 +326,7 @@ TreeSearch::Attempt TreeSearch::seed_attempt(int grow, int orientation, int axis
         done = reached;
         break;
       }
-      ++out.edges;
+      out.edges += next->certified;
       next->parent = parent;
       parent = -2 - static_cast<std::int32_t>(out.grown.size());
       out.grown.push_back(*next);
@@ -378,6 +397,57 @@ std::vector<Pose> TreeSearch::path_through(int tree_a, std::int32_t node_a, int 
   return first;
 }
 
+void TreeSearch::propagate_dead(std::vector<TreeNode>& tree, std::size_t first) {
+  // A parent's index is below its children's: one pass in index order.
+  for (std::size_t i = first; i < tree.size(); ++i)
+    if (!tree[i].dead && tree[i].parent >= 0 && tree[tree[i].parent].dead) tree[i].dead = true;
+}
+
+bool TreeSearch::alive_path(const std::vector<TreeNode>& tree, std::int32_t node) {
+  for (std::int32_t i = node; i >= 0; i = tree[i].parent)
+    if (tree[i].dead) return false;
+  return true;
+}
+
+bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) {
+  struct Edge {
+    int tree;
+    std::int32_t node;
+    MotionStatus status = MotionStatus::refused_cap;
+  };
+  std::vector<Edge> edges;
+  for (std::int32_t i = node_a; i >= 0 && trees_[tree_a][i].parent >= 0; i = trees_[tree_a][i].parent)
+    if (!trees_[tree_a][i].certified) edges.push_back({tree_a, i});
+  if (node_b >= 0)
+    for (std::int32_t i = node_b; i >= 0 && trees_[tree_b][i].parent >= 0; i = trees_[tree_b][i].parent)
+      if (!trees_[tree_b][i].certified) edges.push_back({tree_b, i});
+  const Checker& check = context_.check;
+  tbb::parallel_for(std::size_t{0}, edges.size(), [&](std::size_t k) {
+    const std::vector<TreeNode>& tree = trees_[edges[k].tree];
+    const TreeNode& child = tree[edges[k].node];
+    const TreeNode& parent = tree[child.parent];
+    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance).status;
+  });
+  bool all = true;
+  for (const Edge& e : edges) {
+    TreeNode& child = trees_[e.tree][e.node];
+    ++context_.edges_checked;
+    ++lazy_certified_;
+    if (e.status == MotionStatus::clear) {
+      child.certified = true;
+    } else {
+      all = false;
+      if (e.status == MotionStatus::deadline) continue;  // not known: the time is up anyway
+      child.dead = true;  // blocked, or too close to certify: cut
+      ++lazy_cut_;
+    }
+  }
+  // The subtrees below the cut edges die with them.
+  if (!all)
+    for (auto& tree : trees_) propagate_dead(tree, 1);
+  return all;
+}
+
 std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint64_t max_rounds) {
   std::vector<Attempt> attempts(kRound);
   std::vector<Pose> targets(kRound);
@@ -407,24 +477,36 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
         attempts[i] = attempt(grow, targets[i], first + static_cast<std::uint64_t>(i - seeds));
       }
     });
-    // Added in sample order: the same trees at any thread count.
+    // Added in sample order: the same trees at any thread count. A path that joins the ends
+    // has its lazy edges certified here, in order; the edges that fail are cut.
     for (Attempt& a : attempts) {
       context_.edges_checked += a.edges;
       if (a.root && trees_[1].size() < kGoalRoots) trees_[1].push_back(*a.root);
       if (a.grown.empty()) continue;
+      const std::size_t grown_first = trees_[grow].size();
       const std::int32_t grown = append(trees_[grow], a.grown);
+      propagate_dead(trees_[grow], grown_first);  // a parent may have died earlier in this round
       if (a.in_region) {
-        outcome = TreeOutcome::found;
         // The first of the new nodes in the goal region (each is the next one's parent) ends the path.
         std::int32_t end = grown - static_cast<std::int32_t>(a.grown.size()) + 1;
         while (!goal_reached(context_.space, context_.problem, trees_[0][end].pose)) ++end;
-        return path_through(0, end, 0, -1);
+        if (alive_path(trees_[0], end) && certify_path(0, end, 0, -1)) {
+          outcome = TreeOutcome::found;
+          return path_through(0, end, 0, -1);
+        }
+        if (context_.out_of_time()) break;
+        continue;
       }
       if (a.chain.empty() && !a.connected) continue;
+      const std::size_t chain_first = trees_[1 - grow].size();
       const std::int32_t reach = a.chain.empty() ? a.meet : append(trees_[1 - grow], a.chain);
-      if (a.connected) {
-        outcome = TreeOutcome::found;
-        return path_through(grow, grown, 1 - grow, reach);
+      propagate_dead(trees_[1 - grow], chain_first);
+      if (a.connected && alive_path(trees_[grow], grown) && alive_path(trees_[1 - grow], reach)) {
+        if (certify_path(grow, grown, 1 - grow, reach)) {
+          outcome = TreeOutcome::found;
+          return path_through(grow, grown, 1 - grow, reach);
+        }
+        if (context_.out_of_time()) break;
       }
     }
   }

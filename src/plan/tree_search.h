@@ -42,6 +42,11 @@ struct TreeNode {
   Quat rotation = Quat::Identity();  ///< of pose.rotation
   double distance = 0.0;       ///< lower bound on the distance at `pose`
   std::int32_t parent = -1;    ///< in the same tree; −1 for the root
+  /// The motion from the parent is certified (inside the parent's free ball, or checked). Edges
+  /// past the free ball are certified lazily, only when they lie on a path that joins the ends
+  /// (SBL, Sánchez & Latombe 2001).
+  bool certified = true;
+  bool dead = false;           ///< its edge, or an ancestor's, failed its certificate: ignored
 };
 
 /// How the tree phase ended without a path.
@@ -63,6 +68,9 @@ class TreeSearch {
 
   std::size_t nodes() const { return trees_[0].size() + trees_[1].size(); }
   std::uint64_t samples() const { return sample_index_; }
+  /// Edges certified when a path joined the ends, and those cut (their certificate failed).
+  std::uint64_t lazy_certified() const { return lazy_certified_; }
+  std::uint64_t lazy_cut() const { return lazy_cut_; }
 
   /// The configuration of sample `i` (≥ 1): the reference point uniform in the bounds, the
   /// rotation uniform over SO(3) (Shoemake's map) — except every fourth sample, whose rotation
@@ -108,6 +116,13 @@ class TreeSearch {
   static std::int32_t append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain);
   bool inside(const Pose& pose) const;
   std::vector<Pose> path_through(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const;
+  /// Certifies the uncertified edges of the path through node_a of tree_a and node_b of tree_b
+  /// (node_b −1: none), in parallel; edges that fail are cut (their nodes and the subtrees below
+  /// them die). True when every edge of the path is certified.
+  bool certify_path(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b);
+  /// Marks dead the nodes of `tree` from index `first` on whose parent is dead.
+  void propagate_dead(std::vector<TreeNode>& tree, std::size_t first);
+  static bool alive_path(const std::vector<TreeNode>& tree, std::int32_t node);
 
   PlanContext& context_;
   bool region_ = false;  ///< the goal is a region: the goal tree's roots are samples in it
@@ -119,6 +134,7 @@ class TreeSearch {
   std::array<std::vector<TreeNode>, 2> trees_;
   std::uint64_t sample_index_ = 0;
   std::array<std::uint64_t, 2> seed_index_{};  ///< seeds done, per tree
+  std::uint64_t lazy_certified_ = 0, lazy_cut_ = 0;
 };
 
 }  // namespace swept::detail
