@@ -310,10 +310,15 @@ void write_disassembly_view_file(const Assembly& assembly, const DisassemblyResu
     const bool fixed = std::find(result.fixed.begin(), result.fixed.end(), i) != result.fixed.end();
     parts.push_back({{"name", valid_utf8(assembly.parts[i].name)}, {"fixed", fixed}, {"mesh", encode_mesh(assembly.parts[i].mesh)}});
   }
-  nlohmann::json steps = nlohmann::json::array(), blocked = nlohmann::json::array();
+  nlohmann::json steps = nlohmann::json::array(), blocked = nlohmann::json::array(), blocking = nlohmann::json::array();
   for (const SequenceStep& step : result.sequence) {
     if (!step.removed) {
       for (std::size_t i : step.parts) blocked.push_back(valid_utf8(assembly.parts[i].name));
+      // The directional blocking graph of the parts that stay: per direction tried, the parts
+      // that block a pull along it on their own (the viewer draws an arrow per direction).
+      nlohmann::json directions = nlohmann::json::array();
+      for (const auto& b : step.blocking) directions.push_back({{"direction", vec(b.direction)}, {"blockers", b.blockers}});
+      blocking.push_back({{"parts", step.parts}, {"directions", directions}});
       continue;
     }
     // The path's parameter: by the reference point's travel (a pull: 0 and 1).
@@ -333,7 +338,8 @@ void write_disassembly_view_file(const Assembly& assembly, const DisassemblyResu
   }
   const std::string title = valid_utf8(assembly.source.filename().string());
   const nlohmann::json doc{{"format", 2},       {"title", title},   {"unit", assembly.unit}, {"parts", parts},
-                           {"steps", steps},     {"complete", result.complete}, {"blocked", blocked}};
+                           {"steps", steps},     {"complete", result.complete}, {"blocked", blocked},
+                           {"blocking", blocking}};
   std::ostringstream out;  // written whole or not at all below
   out << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"

@@ -121,6 +121,65 @@ TEST(DisassembleCli, LockedAssemblyExitsTwoWithItsBlockers) {
   EXPECT_NE(table.out.find("not complete"), std::string::npos) << table.out;
 }
 
+TEST(DisassembleCli, ViewPageDrawsTheBlockingGraphOfTheLockedParts) {
+  const fs::path source = SWEPT_SOURCE_DIR;
+  const fs::path dir = scratch("riveted_view");
+  const fs::path toml = write_assembly(dir, riveted_plates());
+  const CliRun json = run_cli("disassemble " + toml.string() + " --json --plan-time 0", false);
+  ASSERT_EQ(json.code, 2) << json.out;
+  const auto cli = nlohmann::json::parse(json.out);
+  const CliRun r = run_cli("disassemble " + toml.string() + " --plan-time 0 --view " + (dir / "view.html").string());
+  ASSERT_EQ(r.code, 2) << r.out;
+  // The page's data: per part that stays, its directions and their blockers, as --json has them.
+  const std::string html = bytes_of(dir / "view.html");
+  const auto start = html.find('>', html.find("<script id=\"swept-data\"")) + 1;
+  const auto doc = nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
+  std::vector<std::string> names;
+  for (const auto& p : doc["parts"]) names.push_back(p["name"]);
+  std::size_t blocked = 0;
+  for (const auto& step : cli["sequence"]) {
+    if (step["status"] != "blocked") continue;
+    ASSERT_LT(blocked, doc["blocking"].size());
+    const auto& b = doc["blocking"][blocked++];
+    ASSERT_EQ(b["parts"].size(), 1u);
+    EXPECT_EQ(names[b["parts"][0].get<std::size_t>()], step["part"]);
+    ASSERT_EQ(b["directions"].size(), step["blocking"].size());
+    for (std::size_t k = 0; k < b["directions"].size(); ++k) {
+      EXPECT_EQ(b["directions"][k]["direction"], step["blocking"][k]["direction"]);
+      nlohmann::json blockers = nlohmann::json::array();
+      for (const auto& i : b["directions"][k]["blockers"]) blockers.push_back(names[i.get<std::size_t>()]);
+      EXPECT_EQ(blockers, step["blocking"][k]["blockers"]);
+    }
+  }
+  EXPECT_EQ(blocked, doc["blocking"].size());
+  EXPECT_GT(blocked, 0u);
+
+  // In a browser: the arrows are drawn at the end and the panel names the blockers.
+  if (!fs::exists("/usr/bin/chromium")) GTEST_SKIP() << "no Chromium at /usr/bin/chromium (apt-get install chromium)";
+  if (!fs::exists(source / "viewer" / "node_modules" / "playwright-core"))
+    GTEST_SKIP() << "viewer/node_modules/playwright-core is missing (npm ci in viewer/)";
+  const std::string cmd = "node '" + (source / "tests" / "viewer" / "disassembly_page.mjs").string() + "' '" +
+                          (dir / "view.html").string() + "' '" + dir.string() + "' 2>&1";
+  std::string out;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+  const int status = ::pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  const auto page = nlohmann::json::parse(out.substr(0, out.find('\n')));
+  EXPECT_TRUE(page["arrows_visible_at_end"].get<bool>());
+  EXPECT_GT(page["red_pixels_at_end"].get<int>(), 50);
+  std::size_t arrows = 0;
+  for (const auto& b : doc["blocking"]) arrows += b["directions"].size();
+  EXPECT_EQ(page["blocking"].size(), arrows);
+  for (const auto& step : cli["sequence"])
+    if (step["status"] == "blocked")
+      EXPECT_NE(page["info_at_end"].get<std::string>().find(step["part"].get<std::string>() + " blocked:"), std::string::npos)
+          << page["info_at_end"];
+}
+
 TEST(DisassembleCli, BadInputIsExitOneAndWritesNothing) {
   const fs::path dir = scratch("bad");
   const fs::path toml = write_assembly(dir, bolted_ring());

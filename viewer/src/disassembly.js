@@ -1,6 +1,8 @@
 // The disassembly page (`swept disassemble --view`, scene data format 2): every part at its
 // mounted pose, the removals played one after the other along their paths; a part that has left
-// fades. The parameter runs over [0, steps]: step k plays while it is in [k, k + 1].
+// fades. The parameter runs over [0, steps]: step k plays while it is in [k, k + 1]. At the end
+// (u = steps), the parts that stay show their blocking graph: one red arrow per direction tried,
+// from the part's centre, and the panel names the parts that block each direction.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { PathMotion } from './path.js';
@@ -68,6 +70,48 @@ export async function startDisassembly(data, { element, buildMesh }) {
   controls.target.copy(center);
   controls.update();
 
+  // The blocking graph of the parts that stay (data.blocking; pages written before it had none).
+  const blocking = [];
+  const arrows = new THREE.Group();
+  for (const b of data.blocking ?? []) {
+    const partBox = new THREE.Box3();
+    for (const i of b.parts) {
+      partBox.expandByPoint(new THREE.Vector3(...data.parts[i].mesh.min));
+      partBox.expandByPoint(new THREE.Vector3(...data.parts[i].mesh.max));
+    }
+    const from = partBox.getCenter(new THREE.Vector3());
+    const length = Math.max(partBox.getSize(new THREE.Vector3()).length() * 0.6, radius * 0.15);
+    for (const d of b.directions) {
+      const dir = new THREE.Vector3(...d.direction).normalize();
+      const arrow = new THREE.ArrowHelper(dir, from, length, 0xff3030, length * 0.25, length * 0.12);
+      arrow.line.material.depthTest = false;
+      arrow.cone.material.depthTest = false;
+      arrow.renderOrder = 10;
+      arrows.add(arrow);
+      blocking.push({ parts: b.parts.map((i) => data.parts[i].name), direction: d.direction,
+        blockers: d.blockers.map((i) => data.parts[i].name) });
+    }
+  }
+  scene.add(arrows);
+  const blockingText = (() => {
+    const fmt = (d) => {
+      const axes = ['x', 'y', 'z'];
+      const k = d.findIndex((c) => Math.abs(Math.abs(c) - 1) < 1e-9);
+      return k >= 0 && d.filter((c) => c === 0).length === 2 ? `${d[k] > 0 ? '+' : '−'}${axes[k]}` :
+        `(${d.map((c) => c.toFixed(2)).join(', ')})`;
+    };
+    const lines = [];
+    for (const b of data.blocking ?? []) {
+      const name = b.parts.map((i) => data.parts[i].name).join(' + ');
+      const per = b.directions.map((d) => `  ${fmt(d.direction)} by ${d.blockers.length ?
+        d.blockers.map((i) => data.parts[i].name).join(', ') : 'none alone'}`);
+      const shown = 10;  // one line per direction, the panel stays readable
+      lines.push(`${name} blocked:`, ...per.slice(0, shown));
+      if (per.length > shown) lines.push(`  … ${per.length - shown} more directions`);
+    }
+    return lines.join('\n');
+  })();
+
   const state = { u: 0, playing: false, needsRender: true, frames: 0 };
   const secondsPerStep = 2;
 
@@ -88,9 +132,12 @@ export async function startDisassembly(data, { element, buildMesh }) {
     });
     scrub.value = String(state.u);
     const s = data.steps[current];
-    info.textContent = steps === 0 ? 'nothing comes out' :
-      `step ${current + 1} of ${steps}: ${s.parts.map((i) => data.parts[i].name).join(' + ')} (${s.method})` +
-      `\n${data.complete ? 'complete' : `not complete: ${data.blocked.join(', ')} stay`}`;
+    // The blocking graph holds once every removal is done.
+    arrows.visible = state.u >= steps;
+    info.textContent = (steps === 0 ? 'nothing comes out' :
+      `step ${current + 1} of ${steps}: ${s.parts.map((i) => data.parts[i].name).join(' + ')} (${s.method})`) +
+      `\n${data.complete ? 'complete' : `not complete: ${data.blocked.join(', ')} stay`}` +
+      (arrows.visible && blockingText ? `\n${blockingText}` : '');
     state.needsRender = true;
   }
   function setPlaying(playing) {
@@ -134,6 +181,12 @@ export async function startDisassembly(data, { element, buildMesh }) {
   requestAnimationFrame(frame);
   window.sweptView = {
     get parameter() { return state.u; },
+    get frames() { return state.frames; },
+    get steps() { return steps; },
+    /** The blocking graph drawn at the end: [{parts, direction, blockers}] (names). */
+    get blocking() { return blocking; },
+    get arrowsVisible() { return arrows.visible; },
+    get info() { return info.textContent; },
     show(u) { setPlaying(false); setParameter(u); renderer.render(scene, camera); },
     play() { setPlaying(true); },
   };
