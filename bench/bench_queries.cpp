@@ -1,5 +1,7 @@
 // Micro-benchmarks of the proximity queries against FCL 0.7 (OBBRSS) in the same run:
-// collide and distance on a CAD mesh pair at near-contact and far poses.
+// collide and distance on a CAD mesh pair at near-contact and far poses, and distance along
+// straight motions with and without coherence (each query hinted with the previous one's
+// closest pair: DistanceRequest::hint).
 //   bench_queries [--benchmark_filter=...]      (mesh pair: SWEPT_BENCH_A / SWEPT_BENCH_B,
 //                                                default occt/motor.stl against itself)
 #include "swept/bench/fcl_model.h"
@@ -28,6 +30,9 @@ struct Fixture {
   Bvh a, b;
   std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fa, fb;
   std::vector<Pose> near, far;
+  /// Straight motions, 32 poses each, from each far pose to a near-contact one (the reference
+  /// point linear, the rotation slerped): the poses a motion check or a path query visits.
+  std::vector<Pose> path;
 
   static const Fixture& get() {
     static const Fixture f = make();
@@ -55,6 +60,13 @@ struct Fixture {
     if (f.near.empty() || f.far.empty()) {
       std::cerr << "bench_queries: no near-contact or far poses found for " << pa << " and " << pb << "\n";
       std::exit(1);
+    }
+    for (std::size_t k = 0; k < std::min(f.near.size(), f.far.size()); ++k) {
+      const Quat q0 = f.far[k].quaternion(), q1 = f.near[k].quaternion();
+      for (int i = 0; i < 32; ++i) {
+        const double t = i / 31.0;
+        f.path.push_back({q0.slerp(t, q1).toRotationMatrix(), (1 - t) * f.far[k].translation + t * f.near[k].translation});
+      }
     }
     return f;
   }
@@ -97,6 +109,40 @@ void BM_FclCollide(benchmark::State& state) {
     benchmark::DoNotOptimize(res.isCollision());
   }
 }
+
+// Along the motions, pose after pose; argument 1: each query hinted with the previous one's pair.
+void BM_SweptDistancePath(benchmark::State& state) {
+  const Fixture& f = Fixture::get();
+  const bool coherent = state.range(0) == 1;
+  for (auto _ : state) {
+    DistanceRequest request;
+    double sum = 0;
+    for (const Pose& p : f.path) {
+      const DistanceResult d = distance(f.a, {}, f.b, p, request);
+      if (coherent) request.hint = d.hint;
+      sum += d.distance;
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * f.path.size()));
+}
+void BM_FclDistancePath(benchmark::State& state) {
+  const Fixture& f = Fixture::get();
+  fcl::DistanceRequestd req;
+  req.enable_nearest_points = true;
+  for (auto _ : state) {
+    double sum = 0;
+    for (const Pose& p : f.path) {
+      fcl::DistanceResultd res;
+      fcl::distance(f.fa.get(), fcl::Transform3d::Identity(), f.fb.get(), to_fcl(p), req, res);
+      sum += res.min_distance;
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * f.path.size()));
+}
+BENCHMARK(BM_SweptDistancePath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FclDistancePath)->Unit(benchmark::kMillisecond);
 
 // Argument: 0 = near contact, 1 = far.
 BENCHMARK(BM_SweptDistance)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);

@@ -23,7 +23,15 @@ double Checker::below(const Pose& pose, double bound, bool relaxed) const {
 }
 
 Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed) const {
-  auto bound = [&](const Pose& pose, double enough) { return clearance(pose, enough, relaxed); };
+  // Coherence: each query of the certificate starts from the previous one's closest pair.
+  DistanceHint hint;
+  auto bound = [&](const Pose& pose, double enough) {
+    ++distance_queries_;
+    const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint};
+    const DistanceResult d = distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
+    if (d.hint.valid()) hint = d.hint;
+    return d.distance;
+  };
   const Certificate c = certify_motion(motion(a, b), bound,
                                        {.margin = margin_, .deadline = deadline_, .from_bound = da, .to_bound = db});
   if (c.status == MotionStatus::refused_cap) ++cap_refusals_;

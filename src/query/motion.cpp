@@ -100,8 +100,10 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
 MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
                               const MotionRequest& request) {
   MotionResult out;
+  DistanceHint hint;  // coherence: each query starts from the previous one's closest pair
   auto tree_distance = [&](const Pose& pose, double enough) {
-    const DistanceResult d = distance(a, pose_a, b, pose, {.enough = enough});
+    const DistanceResult d = distance(a, pose_a, b, pose, {.enough = enough, .hint = hint});
+    if (d.hint.valid()) hint = d.hint;
     out.stats.bv_tests += d.stats.bv_tests;
     out.stats.triangle_tests += d.stats.triangle_tests;
     return d.distance;

@@ -85,6 +85,7 @@ struct DistanceSearch {
   bool have_witness = false;
   Vec3 point_a = Vec3::Zero(), point_b = Vec3::Zero();
   std::uint32_t tri_a = 0, tri_b = 0;
+  std::uint32_t pos_a = UINT32_MAX, pos_b = UINT32_MAX;  ///< the witness's positions in the trees
   double pruned_enough = kInf;  ///< smallest bound of a pair dropped because it reached `enough`
   bool stop_at_first = false;   ///< tolerance queries: stop at the first pair below `best`
   QueryStats stats;
@@ -132,6 +133,8 @@ struct DistanceSearch {
           point_b = d.point_b;
           tri_a = a.triangle_ids[i];
           tri_b = b.triangle_ids[j];
+          pos_a = static_cast<std::uint32_t>(i);
+          pos_b = static_cast<std::uint32_t>(j);
         }
       }
     }
@@ -210,23 +213,46 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough, request.exclude, request.exclude_if);
   const DistanceSearch* used = &cold;
 
+  // Coherence: the previous query's closest pair, measured at these poses, is the answer so far.
+  const DistanceHint h = request.hint;
+  if (h.valid() && h.a < a.triangles.size() && h.b < b.triangles.size() &&
+      !(request.exclude && request.exclude->contains(a.triangle_ids[h.a], b.triangle_ids[h.b])) &&
+      !(request.exclude_if && (*request.exclude_if)(a.triangle_ids[h.a], b.triangle_ids[h.b]))) {
+    const TriangleDistance d = triangle_distance(a.triangles[h.a], rel.apply(b.triangles[h.b]));
+    ++warm.stats.triangle_tests;
+    if (d.distance < request.upper_bound) {
+      warm.set_best(d.distance);
+      warm.have_witness = true;
+      warm.point_a = d.point_a;
+      warm.point_b = d.point_b;
+      warm.tri_a = a.triangle_ids[h.a];
+      warm.tri_b = b.triangle_ids[h.b];
+      warm.pos_a = h.a;
+      warm.pos_b = h.b;
+    }
+  }
+
   // Overlapping models: a first-contact search finds a touching pair far faster than the
   // distance search would single out a zero among many near-zero bounds. It costs little when
-  // the models are apart (most node pairs are rejected near the root).
+  // the models are apart (most node pairs are rejected near the root); skipping it after a
+  // hint that is not a contact made queries along motions into contact 2.4x slower.
   // (Not with pairs left out: the first contact may be one of them.)
+  const bool contact_first = !(request.exclude || request.exclude_if);
   std::int32_t ci = -1, cj = -1;
-  const CollideResult contact =
-      request.exclude || request.exclude_if ? CollideResult{} : collide_relative(a, b, rel, {}, &ci, &cj);
-  warm.stats = contact.stats;
+  const CollideResult contact = contact_first ? collide_relative(a, b, rel, {}, &ci, &cj) : CollideResult{};
+  warm.stats.bv_tests += contact.stats.bv_tests;
+  warm.stats.triangle_tests += contact.stats.triangle_tests;
   if (contact.colliding) {
     const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
-    if (d.distance < request.upper_bound) {
+    if (d.distance < request.upper_bound && (!warm.have_witness || d.distance < warm.best)) {
       warm.set_best(d.distance);
       warm.have_witness = true;
       warm.point_a = d.point_a;
       warm.point_b = d.point_b;
       warm.tri_a = a.triangle_ids[ci];
       warm.tri_b = b.triangle_ids[cj];
+      warm.pos_a = static_cast<std::uint32_t>(ci);
+      warm.pos_b = static_cast<std::uint32_t>(cj);
     }
   }
   if (warm.have_witness && warm.best == 0.0) {
@@ -260,6 +286,7 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
     out.point_b = pose_a.apply(s.point_b);
     out.triangle_a = s.tri_a;
     out.triangle_b = s.tri_b;
+    out.hint = {s.pos_a, s.pos_b};
   }
   return out;
 }
@@ -360,8 +387,22 @@ ToleranceResult tolerance(const Bvh& a, const Pose& pose_a, const Bvh& b, const 
 
 std::vector<DistanceResult> distance_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
                                            std::span<const Pose> poses_b,
-                                           const DistanceRequest& request) {
+                                           const DistanceRequest& request, bool along_path) {
   std::vector<DistanceResult> out(poses_b.size());
+  if (along_path) {
+    // Fixed blocks, each in order with the previous pose's pair as the hint.
+    constexpr std::size_t kBlock = 64;
+    const std::size_t blocks = (poses_b.size() + kBlock - 1) / kBlock;
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t k) {
+      DistanceRequest r = request;
+      r.hint = {};
+      for (std::size_t i = k * kBlock; i < std::min(poses_b.size(), (k + 1) * kBlock); ++i) {
+        out[i] = distance(a, pose_a, b, poses_b[i], r);
+        r.hint = out[i].hint;
+      }
+    });
+    return out;
+  }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, poses_b.size(), 8),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)

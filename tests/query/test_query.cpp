@@ -8,6 +8,7 @@
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -240,6 +241,80 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
 INSTANTIATE_TEST_SUITE_P(Fitters, QueryOracle,
                          ::testing::ValuesIn(swept::test::every_fitter()),
                          [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST_P(QueryOracle, HintedQueriesAlongMotionsMatchBruteForce) {
+  // Coherence (DistanceRequest::hint): along straight motions through every scene's poses, each
+  // query hinted with the previous one's pair gives the brute-force distance; a hint out of
+  // range, or naming a pair left out, is ignored; on a tie the hinted pair stays the witness;
+  // a batch along the path equals the independent one and does not depend on the threads.
+  for (const Scene& s : scenes()) {
+    SCOPED_TRACE(s.name);
+    const Bvh a = build(s.a, GetParam());
+    const Bvh b = build(s.b, GetParam());
+    std::vector<Pose> path;
+    for (std::size_t k = 0; k + 1 < s.poses_b.size(); ++k) {
+      const Pose p0 = relative(s.poses_a[k], s.poses_b[k]), p1 = relative(s.poses_a[k + 1], s.poses_b[k + 1]);
+      const Quat q0 = p0.quaternion(), q1 = p1.quaternion();
+      for (int i = 0; i < 3; ++i) {
+        const double t = i / 3.0;
+        path.push_back({q0.slerp(t, q1).toRotationMatrix(), (1 - t) * p0.translation + t * p1.translation});
+      }
+    }
+    DistanceRequest request;
+    std::uint64_t bv_hinted = 0, bv_cold = 0;
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      SCOPED_TRACE("path pose " + std::to_string(k));
+      const test::BruteDistance bd = test::brute_distance(s.a, s.b, Pose::identity(), path[k]);
+      const DistanceResult hinted = distance(a, {}, b, path[k], request);
+      const DistanceResult cold = distance(a, {}, b, path[k]);
+      ASSERT_NEAR(hinted.distance, bd.distance, 1e-12 * bd.distance + 1e-300);
+      EXPECT_NEAR(hinted.distance, cold.distance, 1e-12 * cold.distance + 1e-300);
+      EXPECT_NEAR((hinted.point_a - hinted.point_b).norm(), hinted.distance, 1e-9 * (1 + path[k].translation.norm()));
+      if (request.hint.valid() && hinted.distance > 0.0) {
+        // The hinted pair at this pose is an upper bound the answer reached: when it is the
+        // answer, the hinted pair is reported (ties keep the witness).
+        const Triangle& t = b.triangles[request.hint.b];
+        const TriangleDistance h = triangle_distance(a.triangles[request.hint.a],
+                                                     {path[k].apply(t.p), path[k].apply(t.q), path[k].apply(t.r)});
+        if (h.distance == hinted.distance) {
+          EXPECT_EQ(hinted.triangle_a, a.triangle_ids[request.hint.a]);
+          EXPECT_EQ(hinted.triangle_b, b.triangle_ids[request.hint.b]);
+        }
+      }
+      bv_hinted += hinted.stats.bv_tests;
+      bv_cold += cold.stats.bv_tests;
+      ASSERT_TRUE(hinted.hint.valid());
+      EXPECT_EQ(a.triangle_ids[hinted.hint.a], hinted.triangle_a);
+      EXPECT_EQ(b.triangle_ids[hinted.hint.b], hinted.triangle_b);
+      request.hint = hinted.hint;
+    }
+    EXPECT_LE(bv_hinted, bv_cold);  // the hint only prunes
+    // Ignored hints: out of range, and a pair left out.
+    const DistanceResult cold = distance(a, {}, b, path[0]);
+    EXPECT_EQ(distance(a, {}, b, path[0], {.hint = {UINT32_MAX - 1, 0}}).distance, cold.distance);
+    EXPECT_EQ(distance(a, {}, b, path[0], {.hint = {0, static_cast<std::uint32_t>(b.triangles.size())}}).distance, cold.distance);
+    TrianglePairs leave_out;
+    leave_out.pairs.push_back({cold.triangle_a, cold.triangle_b});
+    const DistanceResult left = distance(a, {}, b, path[0], {.exclude = &leave_out, .hint = cold.hint});
+    const DistanceResult left_cold = distance(a, {}, b, path[0], {.exclude = &leave_out});
+    EXPECT_NEAR(left.distance, left_cold.distance, 1e-12 * left_cold.distance + 1e-300);
+    EXPECT_FALSE(left.triangle_a == cold.triangle_a && left.triangle_b == cold.triangle_b);
+    // Batches: along the path, the same distances as independent queries, at any thread count.
+    const auto independent = distance_batch(a, {}, b, path);
+    std::vector<std::vector<DistanceResult>> along;
+    for (int threads : {1, 2}) {
+      tbb::task_arena arena(threads);
+      along.push_back(arena.execute([&] { return distance_batch(a, {}, b, path, {}, true); }));
+    }
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      EXPECT_NEAR(along[0][k].distance, independent[k].distance, 1e-12 * independent[k].distance + 1e-300);
+      EXPECT_EQ(along[0][k].distance, along[1][k].distance);
+      EXPECT_EQ(along[0][k].triangle_a, along[1][k].triangle_a);
+      EXPECT_EQ(along[0][k].triangle_b, along[1][k].triangle_b);
+      EXPECT_EQ(along[0][k].point_a, along[1][k].point_a);
+    }
+  }
+}
 
 TEST(QueryConcurrency, ManyThreadsGiveTheSerialResults) {
   Rng rng(77);

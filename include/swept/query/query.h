@@ -47,6 +47,16 @@ CollideResult collide(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose
                       const CollideRequest& request = {});
 
 // ---- distance ----------------------------------------------------------------------------------
+/// Coherence along a motion: the closest triangle pair of a previous query, as positions in the
+/// two trees' triangle arrays (opaque: take it from DistanceResult::hint). The next query starts
+/// from that pair's exact distance as its answer so far, so that it prunes from the first node
+/// pair on; on a tie it keeps that pair as the witness.
+struct DistanceHint {
+  std::uint32_t a = UINT32_MAX;
+  std::uint32_t b = UINT32_MAX;
+  bool valid() const { return a != UINT32_MAX && b != UINT32_MAX; }
+};
+
 struct DistanceRequest {
   double rel_err = 0.0;  ///< stop when the answer is provably within this relative error
   double abs_err = 0.0;  ///< ... or within this absolute error (PQP semantics)
@@ -64,6 +74,10 @@ struct DistanceRequest {
   /// it returns true are skipped like `exclude`'s. It must be safe to call from many threads and
   /// give the same answer for the same pair (the assembly's mate rule, swept/assembly/contact.h).
   const std::function<bool(std::uint32_t triangle_a, std::uint32_t triangle_b)>* exclude_if = nullptr;
+  /// The previous query's `hint` (same two trees), or none. The distance does not depend on
+  /// it (only the work does, and on a tie which closest pair is reported); a hint out of range
+  /// or naming a pair left out is ignored.
+  DistanceHint hint{};
 };
 struct DistanceResult {
   double distance = std::numeric_limits<double>::infinity();
@@ -72,6 +86,7 @@ struct DistanceResult {
   Vec3 point_b = Vec3::Zero(); ///< closest point on B (world)
   std::uint32_t triangle_a = 0;
   std::uint32_t triangle_b = 0;
+  DistanceHint hint{};         ///< the witness pair, for the next query's DistanceRequest::hint
   QueryStats stats;
 };
 DistanceResult distance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
@@ -108,9 +123,13 @@ ToleranceResult tolerance(const Bvh& a, const Pose& pose_a, const Bvh& b, const 
 
 // ---- batches -----------------------------------------------------------------------------------
 /// Many poses of B against A, answered in parallel (oneTBB); results in input order.
+/// `along_path`: the poses follow each other along a motion; each query takes the previous
+/// one's closest pair as its hint, in fixed blocks of 64 poses (the first of a block has
+/// none), so the results do not depend on the number of threads. The distances are the same
+/// either way; on a tie the pair reported may differ.
 std::vector<DistanceResult> distance_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
                                            std::span<const Pose> poses_b,
-                                           const DistanceRequest& request = {});
+                                           const DistanceRequest& request = {}, bool along_path = false);
 std::vector<CollideResult> collide_batch(const Bvh& a, const Pose& pose_a, const Bvh& b,
                                          std::span<const Pose> poses_b,
                                          const CollideRequest& request = {});
