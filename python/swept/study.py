@@ -268,18 +268,24 @@ def _sequence_hash(result: swept.DisassemblyResult) -> str:
     return h.hexdigest()[:16]
 
 
-def _run_disassembly(job: Job, row: dict) -> None:
+def _cached_load(cache: dict, file: str, what: str, load: Callable[[str], Any]) -> tuple[tuple, Any, bool]:
+    """The file's object from this process's cache, or loaded and kept: (key, object, cached)."""
     try:
-        key = _file_key(job.file)
+        key = _file_key(file)
     except OSError as e:
-        raise swept.Error(f"{job.file}: cannot open the assembly ({e.strerror})") from None
+        raise swept.Error(f"{file}: cannot open the {what} ({e.strerror})") from None
     with _cache_lock:
-        assembly = _assemblies.get(key)
-    cached = assembly is not None
-    if assembly is None:
-        assembly = swept.Assembly.load(job.file)
-        with _cache_lock:
-            _assemblies[key] = assembly
+        obj = cache.get(key)
+    if obj is not None:
+        return key, obj, True
+    obj = load(file)
+    with _cache_lock:
+        cache[key] = obj
+    return key, obj, False
+
+
+def _run_disassembly(job: Job, row: dict) -> None:
+    _, assembly, cached = _cached_load(_assemblies, job.file, "assembly", swept.Assembly.load)
     clearance = 0.01 if job.clearance is None else job.clearance
     plan_time = 2.0 if math.isnan(job.time_limit) else job.time_limit
     row.update(clearance=clearance, time_limit=plan_time, scene_cached=cached)
@@ -314,16 +320,7 @@ def run_job(job: Job) -> dict:
         row["cpu_ms"] = (time.process_time() - c0) * 1e3
         return row
     try:
-        try:
-            key = _file_key(job.file)
-        except OSError as e:
-            raise swept.Error(f"{job.file}: cannot open the problem file ({e.strerror})") from None
-        with _cache_lock:
-            base = _problems.get(key)
-        if base is None:
-            base = swept.Problem.load(job.file)
-            with _cache_lock:
-                _problems[key] = base
+        key, base, _ = _cached_load(_problems, job.file, "problem file", swept.Problem.load)
         problem = base.copy()
         if job.fitter is not None:
             problem.fitter = job.fitter
