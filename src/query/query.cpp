@@ -98,6 +98,22 @@ struct DistanceSearch {
     best_level = std::min(best / (1.0 + rel_err), best - abs_err);
   }
   double prune_level() const { return std::min(best_level, enough); }
+  /// Pairs (tree positions) left out by `exclude` or `exclude_if`.
+  bool excluded(std::size_t i, std::size_t j) const {
+    return (exclude && exclude->contains(a.triangle_ids[i], b.triangle_ids[j])) ||
+           (exclude_if && (*exclude_if)(a.triangle_ids[i], b.triangle_ids[j]));
+  }
+  /// The pair at tree positions (i, j), at distance `d`, is the answer so far.
+  void take(const TriangleDistance& d, std::size_t i, std::size_t j) {
+    set_best(d.distance);
+    have_witness = true;
+    point_a = d.point_a;
+    point_b = d.point_b;
+    tri_a = a.triangle_ids[i];
+    tri_b = b.triangle_ids[j];
+    pos_a = static_cast<std::uint32_t>(i);
+    pos_b = static_cast<std::uint32_t>(j);
+  }
   /// True when a pair with this lower bound is dropped.
   bool prune(double bound) {
     if (bound >= best_level) return true;
@@ -122,20 +138,10 @@ struct DistanceSearch {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
       const Triangle tb = rel.apply(b.triangles[j]);
       for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
-        if (exclude && exclude->contains(a.triangle_ids[i], b.triangle_ids[j])) continue;
-        if (exclude_if && (*exclude_if)(a.triangle_ids[i], b.triangle_ids[j])) continue;
+        if (excluded(i, j)) continue;
         ++stats.triangle_tests;
         TriangleDistance d;
-        if (triangle_distance_below(a.triangles[i], tb, best, d) && d.distance < best) {
-          set_best(d.distance);
-          have_witness = true;
-          point_a = d.point_a;
-          point_b = d.point_b;
-          tri_a = a.triangle_ids[i];
-          tri_b = b.triangle_ids[j];
-          pos_a = static_cast<std::uint32_t>(i);
-          pos_b = static_cast<std::uint32_t>(j);
-        }
+        if (triangle_distance_below(a.triangles[i], tb, best, d) && d.distance < best) take(d, i, j);
       }
     }
   }
@@ -215,21 +221,10 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
 
   // Coherence: the previous query's closest pair, measured at these poses, is the answer so far.
   const DistanceHint h = request.hint;
-  if (h.valid() && h.a < a.triangles.size() && h.b < b.triangles.size() &&
-      !(request.exclude && request.exclude->contains(a.triangle_ids[h.a], b.triangle_ids[h.b])) &&
-      !(request.exclude_if && (*request.exclude_if)(a.triangle_ids[h.a], b.triangle_ids[h.b]))) {
+  if (h.valid() && h.a < a.triangles.size() && h.b < b.triangles.size() && !warm.excluded(h.a, h.b)) {
     const TriangleDistance d = triangle_distance(a.triangles[h.a], rel.apply(b.triangles[h.b]));
     ++warm.stats.triangle_tests;
-    if (d.distance < request.upper_bound) {
-      warm.set_best(d.distance);
-      warm.have_witness = true;
-      warm.point_a = d.point_a;
-      warm.point_b = d.point_b;
-      warm.tri_a = a.triangle_ids[h.a];
-      warm.tri_b = b.triangle_ids[h.b];
-      warm.pos_a = h.a;
-      warm.pos_b = h.b;
-    }
+    if (d.distance < request.upper_bound) warm.take(d, h.a, h.b);
   }
 
   // Overlapping models: a first-contact search finds a touching pair far faster than the
@@ -244,16 +239,7 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   warm.stats.triangle_tests += contact.stats.triangle_tests;
   if (contact.colliding) {
     const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
-    if (d.distance < request.upper_bound && (!warm.have_witness || d.distance < warm.best)) {
-      warm.set_best(d.distance);
-      warm.have_witness = true;
-      warm.point_a = d.point_a;
-      warm.point_b = d.point_b;
-      warm.tri_a = a.triangle_ids[ci];
-      warm.tri_b = b.triangle_ids[cj];
-      warm.pos_a = static_cast<std::uint32_t>(ci);
-      warm.pos_b = static_cast<std::uint32_t>(cj);
-    }
+    if (d.distance < request.upper_bound && (!warm.have_witness || d.distance < warm.best)) warm.take(d, ci, cj);
   }
   if (warm.have_witness && warm.best == 0.0) {
     used = &warm;  // nothing is closer than 0
