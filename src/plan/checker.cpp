@@ -4,21 +4,20 @@
 
 namespace swept::detail {
 
-double Checker::clearance(const Pose& pose, double enough, bool relaxed) const {
+DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint) const {
   ++distance_queries_;
-  const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr};
-  return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request).distance;
+  const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint};
+  return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
 }
 
-DistanceResult Checker::nearest(const Pose& pose, double enough) const {
-  ++distance_queries_;
-  return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, {.enough = enough});
+double Checker::clearance(const Pose& pose, double enough, bool relaxed) const {
+  return query(pose, enough, relaxed).distance;
 }
+
+DistanceResult Checker::nearest(const Pose& pose, double enough) const { return query(pose, enough, false); }
 
 double Checker::below(const Pose& pose, double bound, bool relaxed) const {
-  ++distance_queries_;
-  const DistanceRequest request{.enough = bound, .exclude = relaxed ? &exempt_ : nullptr};
-  const DistanceResult d = distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
+  const DistanceResult d = query(pose, bound, relaxed);
   return d.exact ? d.distance : std::numeric_limits<double>::infinity();
 }
 
@@ -26,9 +25,7 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
   // Coherence: each query of the certificate starts from the previous one's closest pair.
   DistanceHint hint;
   auto bound = [&](const Pose& pose, double enough) {
-    ++distance_queries_;
-    const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint};
-    const DistanceResult d = distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
+    const DistanceResult d = query(pose, enough, relaxed, hint);
     if (d.hint.valid()) hint = d.hint;
     return d.distance;
   };

@@ -70,6 +70,9 @@ class Checker {
   std::uint64_t cap_refusals() const { return cap_refusals_.load(); }
 
  private:
+  /// One counted distance query against the obstacles (relaxed: the exempt pairs left out).
+  DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}) const;
+
   const PlanScene& scene_;
   double margin_;
   Vec3 reference_;
