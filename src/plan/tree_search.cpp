@@ -27,8 +27,6 @@ constexpr int kConnectSteps = 64;
 constexpr int kSlides = 8;
 // Roots of a goal region's tree.
 constexpr std::size_t kGoalRoots = 16;
-// Steps past a node's free ball are certified only when a path joining the ends uses them.
-constexpr bool kLazyEdges = true;
 
 }  // namespace
 
@@ -179,7 +177,7 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
     const Pose q = whole ? target : motion.at(s / length);
     if (inside(q)) {
       const double dq = check.clearance(q, margin + step_);
-      if (dq > margin && kLazyEdges && s > bubble) {
+      if (dq > margin && s > bubble) {
         // Past the free ball: the edge is certified later, if a path uses it. Its midpoint is
         // checked now (a step across a thin wall has free ends).
         const Pose mid = motion.at(0.5 * s / length);
@@ -275,7 +273,7 @@ std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& targ
     if (!inside(q)) continue;
     const double dq = check.clearance(q, margin + step_);
     if (dq <= margin) continue;
-    if (kLazyEdges && s > 0.9 * (from.distance - margin)) {
+    if (s > 0.9 * (from.distance - margin)) {  // past the free ball: certified lazily
       TreeNode node = make_node(q, dq, -1);
       node.certified = false;
       return node;
