@@ -77,12 +77,6 @@ PyMesh part_mesh(const PyAssembly& pa, const pyb::handle& key) {
   return mesh_from_data(std::move(data));
 }
 
-pyb::array_t<double> vec3(const Vec3& v) {
-  auto a = new_array<double>({3});
-  for (int c = 0; c < 3; ++c) a.mutable_data()[c] = v[c];
-  return a;
-}
-
 pyb::list names(const Assembly& a, const std::vector<std::size_t>& parts) {
   pyb::list out;
   for (std::size_t i : parts) out.append(a.parts[i].name);
@@ -133,17 +127,15 @@ pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<d
     d["parts"] = pyb::tuple(names(a, s.parts));
     d["removed"] = s.removed;
     d["method"] = s.removed ? pyb::object(pyb::str(s.method == RemovalMethod::pull ? "pull" : "plan")) : pyb::none();
-    d["direction"] = s.removed && s.method == RemovalMethod::pull ? pyb::object(vec3(s.direction)) : pyb::none();
+    d["direction"] = s.removed && s.method == RemovalMethod::pull ? pyb::object(vec3_array(s.direction)) : pyb::none();
     d["distance"] = s.distance;
-    auto path = new_array<double>({static_cast<pyb::ssize_t>(s.path.poses.size()), 7});
-    for (std::size_t i = 0; i < s.path.poses.size(); ++i) write_pose7(s.path.poses[i], path.mutable_data() + 7 * i);
-    d["path"] = path;
-    d["reference"] = vec3(s.reference);
+    d["path"] = poses_array(s.path.poses);
+    d["reference"] = vec3_array(s.reference);
     std::set<std::size_t> all;
     pyb::list blocking;
     for (const auto& b : s.blocking) {
       all.insert(b.blockers.begin(), b.blockers.end());
-      blocking.append(pyb::make_tuple(vec3(b.direction), pyb::tuple(names(a, b.blockers))));
+      blocking.append(pyb::make_tuple(vec3_array(b.direction), pyb::tuple(names(a, b.blockers))));
     }
     d["blockers"] = pyb::tuple(names(a, std::vector<std::size_t>(all.begin(), all.end())));
     d["blocking"] = blocking;

@@ -114,6 +114,18 @@ void write_pose7(const Pose& p, double* out) {
   out[3] = q.x(), out[4] = q.y(), out[5] = q.z(), out[6] = q.w();
 }
 
+pyb::array_t<double> vec3_array(const Vec3& v) {
+  pyb::array_t<double> a(3);
+  for (int c = 0; c < 3; ++c) a.mutable_data()[c] = v[c];
+  return a;
+}
+
+pyb::array_t<double> poses_array(const std::vector<Pose>& poses) {
+  pyb::array_t<double> a({static_cast<pyb::ssize_t>(poses.size()), pyb::ssize_t{7}});
+  for (std::size_t i = 0; i < poses.size(); ++i) write_pose7(poses[i], a.mutable_data() + 7 * i);
+  return a;
+}
+
 void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t)>& body) {
   if (threads < 0) throw InputError("threads must be >= 0 (0: all cores), not " + std::to_string(threads));
   // In chunks, so that Ctrl-C (a signal Python sees between chunks) stops a long batch: the GIL

@@ -79,6 +79,10 @@ Vec3 to_vec3(const pyb::handle& obj, const char* name);
 
 /// A pose as (x, y, z, qx, qy, qz, qw) written at out[0..6].
 void write_pose7(const Pose& p, double* out);
+/// A (3,) array of the vector's coordinates.
+pyb::array_t<double> vec3_array(const Vec3& v);
+/// A (P, 7) array of the poses, one write_pose7() row each.
+pyb::array_t<double> poses_array(const std::vector<Pose>& poses);
 
 /// Runs body(k) for k in [0, count) on `threads` threads (0: all cores), the GIL released.
 /// Each k is independent; the results do not depend on the thread count. Raises

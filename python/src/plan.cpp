@@ -30,12 +30,6 @@ pyb::array_t<double> pose7(const Pose& p) {
   return a;
 }
 
-pyb::array_t<double> vec3(const Vec3& v) {
-  auto a = new_array<double>({3});
-  for (int c = 0; c < 3; ++c) a.mutable_data()[c] = v[c];
-  return a;
-}
-
 std::string hex(std::uint64_t h) {
   std::ostringstream os;
   os << std::hex << std::setw(16) << std::setfill('0') << h;
@@ -117,8 +111,7 @@ pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::
       r.status == PlanStatus::invalid_bounds)
     throw InputError(problem.source.string() + ": " + r.message);
 
-  auto path = new_array<double>({static_cast<pyb::ssize_t>(r.path.poses.size()), 7});
-  for (std::size_t i = 0; i < r.path.poses.size(); ++i) write_pose7(r.path.poses[i], path.mutable_data() + 7 * i);
+  const auto path = poses_array(r.path.poses);
   pyb::dict d;
   d["status"] = status_name(r.status);
   d["solved"] = r.solved();
@@ -149,7 +142,7 @@ pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::
   d["level"] = r.level;
   d["nodes_checked"] = r.nodes_checked;
   d["edges_checked"] = r.edges_checked;
-  d["reference_point"] = vec3(scene.scene->reference);
+  d["reference_point"] = vec3_array(scene.scene->reference);
   return d;
 }
 
@@ -224,7 +217,7 @@ different clearances or time limits: swept.plan(problem, scene=scene).)doc")
                              "BVH of the obstacles (world frame)")
       .def_property_readonly("body_tree", [](const PyScene& s) { return scene_tree(s, s.scene->body_tree); },
                              "BVH of the body (body frame)")
-      .def_property_readonly("reference", [](const PyScene& s) { return vec3(s.scene->reference); })
+      .def_property_readonly("reference", [](const PyScene& s) { return vec3_array(s.scene->reference); })
       .def_property_readonly("radius", [](const PyScene& s) { return s.scene->radius; })
       .def_property_readonly("obstacle_triangles", [](const PyScene& s) { return s.scene->obstacles.triangles.size(); })
       .def_property_readonly("body_triangles", [](const PyScene& s) { return s.scene->body.triangles.size(); })
