@@ -202,6 +202,47 @@ double rectangle_distance(const RectanglePair& pr) {
   return std::max(0.0, std::sqrt(best) - slack);
 }
 
+double swept_rectangle_lower_bound(const RectanglePair& pr, const Vec3& sweep, double stop_at) {
+  const Mat3& R = pr.rotation;
+  const double a0 = pr.a[0], a1 = pr.a[1], b0 = pr.b[0], b1 = pr.b[1];
+  // B along the sweep is the zonotope {mid + s·u + t·v + τ·half}, |s| ≤ b0, |t| ≤ b1, |τ| ≤ 1.
+  const Vec3 half = 0.5 * sweep;
+  const Vec3 mid = pr.translation + half;
+  const Vec3 u = R.col(0), v = R.col(1), w = R.col(2);
+  const double slack = kRectSlack * (mid.cwiseAbs().sum() + half.cwiseAbs().sum() + a0 + a1 + b0 + b1);
+  stop_at += slack;
+  double gap = -kInf;
+  // The gap along n (any length; skipped when n is too short to have a direction).
+  auto axis = [&](const Vec3& n) {
+    const double len2 = n.squaredNorm();
+    if (!(len2 > 1e-18)) return false;
+    const double ext = a0 * std::abs(n.x()) + a1 * std::abs(n.y()) + b0 * std::abs(n.dot(u)) +
+                       b1 * std::abs(n.dot(v)) + std::abs(n.dot(half));
+    gap = std::max(gap, (std::abs(n.dot(mid)) - ext) / std::sqrt(len2));
+    return gap >= stop_at;
+  };
+  const double hh = half.squaredNorm();
+  const double mm = mid.squaredNorm();
+  if (!(mm > 0.0)) return -slack;
+  const Vec3 along = hh > 0.0 ? Vec3(half / std::sqrt(hh)) : Vec3::Zero();
+  // The center line across the sweep first: a body passing beside another is told apart by it.
+  if (axis((mid - mid.dot(along) * along) / std::sqrt(mm))) return gap - slack;
+  if (axis(Vec3::UnitZ()) || axis(w) || axis(mid / std::sqrt(mm))) return gap - slack;
+  if (axis(Vec3::UnitX()) || axis(Vec3::UnitY()) || axis(u) || axis(v)) return gap - slack;
+  if (hh > 0.0) {
+    // Faces of the zonotope and edge × edge with the sweep.
+    if (axis(along) || axis(u.cross(along)) || axis(v.cross(along)) || axis(Vec3::UnitX().cross(along)) ||
+        axis(Vec3::UnitY().cross(along)) || axis(Vec3::UnitZ().cross(along)))
+      return gap - slack;
+  }
+  const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY();
+  axis(x.cross(u));
+  axis(x.cross(v));
+  axis(y.cross(u));
+  axis(y.cross(v));
+  return gap - slack;
+}
+
 double rss_distance(const Rss& a, const Rss& b) {
   const RectanglePair p = rectangle_pair(a, b);
   const double d = std::max(rectangle_gap(p), rectangle_distance(p));

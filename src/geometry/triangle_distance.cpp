@@ -327,4 +327,28 @@ bool triangles_intersect(const Triangle& a, const Triangle& b) {
   return triangle_distance_below(a, b, std::nextafter(tol, kInf), d);
 }
 
+bool triangle_sweep_within(const Triangle& a, const Triangle& b, const Vec3& sweep, double limit) {
+  const double below = std::nextafter(limit, kInf);
+  TriangleDistance d;
+  auto within = [&](const Triangle& f) { return triangle_distance_below(a, f, below, d) && d.distance <= limit; };
+  if (within(b)) return true;
+  if (sweep.isZero()) return false;
+  if (within(Triangle{b.p + sweep, b.q + sweep, b.r + sweep})) return true;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& x = b[k];
+    const Vec3& y = b[(k + 1) % 3];
+    if (within(Triangle{x, y, y + sweep}) || within(Triangle{x, y + sweep, x + sweep})) return true;
+  }
+  // Not near the prism's boundary: near it only from inside, where every vertex of `a` then is.
+  // a.p = b.p + α·(b.q − b.p) + β·(b.r − b.p) + τ·sweep, inside for α, β ≥ 0, α + β ≤ 1, τ ∈ [0, 1].
+  Mat3 m;
+  m.col(0) = b.q - b.p;
+  m.col(1) = b.r - b.p;
+  m.col(2) = sweep;
+  const double det = m.determinant();
+  if (!(std::abs(det) > 1e-12 * m.col(0).norm() * m.col(1).norm() * sweep.norm())) return false;  // a flat prism: no inside
+  const Vec3 c = m.inverse() * (a.p - b.p);
+  return c[0] >= 0.0 && c[1] >= 0.0 && c[0] + c[1] <= 1.0 && c[2] >= 0.0 && c[2] <= 1.0;
+}
+
 }  // namespace swept

@@ -67,6 +67,12 @@ double touch_tolerance(const Triangle& a, const Triangle& b);
 /// as intersecting. Degenerate triangles are tested as segments or points.
 bool triangles_intersect(const Triangle& a, const Triangle& b);
 
+/// Does triangle `b`, translated by τ·sweep for some τ ∈ [0, 1], come within `limit` (≥ 0) of
+/// triangle `a` (distance ≤ limit)? Exact: the positions of b along the sweep fill the prism
+/// conv(b ∪ b + sweep), whose distance to `a` is the smallest over its boundary (b, b + sweep and
+/// the three parallelograms its edges sweep, each as two triangles), or 0 when `a` lies inside it.
+bool triangle_sweep_within(const Triangle& a, const Triangle& b, const Vec3& sweep, double limit);
+
 /// Rectangle B placed in the frame of rectangle A, where A is [−a0, a0] × [−a1, a1] × {0}:
 /// B = { translation + s·rotation.col(0) + t·rotation.col(1) : |s| ≤ b0, |t| ≤ b1 }.
 struct RectanglePair {
@@ -98,6 +104,16 @@ double rectangle_gap(const RectanglePair& pair,
 /// returns early once a gap ≥ `stop_at` is found.
 double rectangle_lower_bound(const RectanglePair& pair,
                              double stop_at = std::numeric_limits<double>::infinity());
+
+/// A lower bound on the distance between rectangle A and rectangle B *swept* along `sweep` (B at
+/// translation + τ·sweep for every τ ∈ [0, 1], all in A's frame): the largest projection gap on
+/// the separating axes of A and the zonotope B ⊕ segment (A's and B's normals and edges, the
+/// sweep, the cross products of the sweep and of A's edges with B's, the center line and its
+/// part across the sweep). Never larger than the smallest distance along the sweep; may be ≤ 0.
+/// Returns as soon as a gap ≥ `stop_at` is found. With a zero sweep it is a (weaker)
+/// `rectangle_gap`.
+double swept_rectangle_lower_bound(const RectanglePair& pair, const Vec3& sweep,
+                                   double stop_at = std::numeric_limits<double>::infinity());
 
 /// The pair for two RSSs given in one common frame.
 RectanglePair rectangle_pair(const Rss& a, const Rss& b);

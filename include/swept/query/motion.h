@@ -108,4 +108,31 @@ struct MotionResult {
 MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
                               const MotionRequest& request = {});
 
+// ---- exact sweep of a translation -----------------------------------------------------------
+struct SweepRequest {
+  Vec3 translation = Vec3::Zero();  ///< B moves from pose_b to pose_b moved by this (world frame)
+  double margin = 0.0;              ///< a pair at distance ≤ margin anywhere along the motion blocks
+  /// Triangle pairs (A's id, B's id) that never block (not owned; null: none), as
+  /// `DistanceRequest::exclude_if`: the assembly's mate rule.
+  const std::function<bool(std::uint32_t triangle_a, std::uint32_t triangle_b)>* exclude_if = nullptr;
+  /// Node pairs (A's node index, B's node index in `Bvh::nodes`) whose every triangle pair
+  /// `exclude_if` leaves out (not owned; null: none): a rule proven for whole subtrees at once,
+  /// so that a large face sliding along another is not visited triangle pair by triangle pair.
+  const std::function<bool(std::int32_t node_a, std::int32_t node_b)>* exclude_nodes_if = nullptr;
+};
+struct SweepResult {
+  bool clear = true;             ///< every pair not left out keeps more than the margin along the whole motion
+  std::uint32_t triangle_a = 0;  ///< not clear: a blocking pair (input ids)
+  std::uint32_t triangle_b = 0;
+  QueryStats stats;
+};
+/// Is the pure translation of B against A clear by more than the margin? Exact, in one
+/// traversal: no steps along the motion, no certificate — each node pair is bounded against
+/// B's node swept along the whole translation (`swept_rectangle_lower_bound`), each leaf pair
+/// tested with `triangle_sweep_within`. The answer a `certify_motion` of the same translation
+/// gives with distances that leave the same pairs out, without its parameter resolution; stops
+/// at the first blocking pair. Deterministic.
+SweepResult sweep_translation(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                              const SweepRequest& request);
+
 }  // namespace swept
