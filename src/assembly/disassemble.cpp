@@ -63,6 +63,7 @@ class Sequencer {
     std::vector<bool> is_fixed(n, false);
     for (std::size_t i : out.fixed) is_fixed[i] = true;
     touching_ = contact_graph();
+    contacts_ = contact_pairs(is_fixed);
     blocked_pulls_.assign(n, {});
     std::vector<std::size_t> remaining(n);
     std::iota(remaining.begin(), remaining.end(), std::size_t{0});
@@ -116,6 +117,9 @@ class Sequencer {
   std::vector<Body> bodies_;
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
+  /// contacts_[i][j]: the contact pairs of part j (as A) with movable part i (as B) at the
+  /// mounted poses, for pull_directions, which asks for them in every round.
+  std::vector<std::vector<TrianglePairs>> contacts_;
   std::atomic<std::uint64_t> queries_{0};
   /// Pulls found blocked, per part: the direction, the length and the part that blocks it on its
   /// own. Removing other parts cannot clear it (the same pull meets the same pose), so while that
@@ -164,6 +168,29 @@ class Sequencer {
     return g;
   }
 
+  // The contact pairs pull_directions needs, once: for every movable part and every other part
+  // whose box comes within clearance + tolerance of its box, in parallel.
+  std::vector<std::vector<TrianglePairs>> contact_pairs(const std::vector<bool>& is_fixed) const {
+    const std::size_t n = bodies_.size();
+    const double threshold = settings_.clearance + settings_.tolerance;
+    std::vector<std::vector<TrianglePairs>> out(n, std::vector<TrianglePairs>(n));
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        if (i != j && !is_fixed[i] && assembly_detail::box_gap(bodies_[j].box, bodies_[i].box) <= threshold)
+          pairs.push_back({i, j});
+    tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+      const auto [i, j] = pairs[k];
+      out[i][j] = proximity_pairs(bodies_[j].tree, Pose{}, bodies_[i].tree, Pose{}, {.threshold = threshold}).pairs;
+    });
+    return out;
+  }
+
+  // The known contact pairs of a single part, for pull_directions.
+  std::function<const TrianglePairs*(const Body&)> known_contacts(std::size_t part) const {
+    return [this, part](const Body& o) { return &contacts_[part][static_cast<std::size_t>(&o - bodies_.data())]; };
+  }
+
   // Connected groups of touching movable parts: each connected component (two parts or more),
   // then each touching pair, smallest first.
   std::vector<std::vector<std::size_t>> subassemblies(const std::vector<std::size_t>& movable) const {
@@ -205,7 +232,8 @@ class Sequencer {
                     const std::vector<std::size_t>& remaining) {
     Attempt at;
     const double threshold = settings_.clearance + settings_.tolerance;
-    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold)) {
+    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold,
+                                                          part ? known_contacts(*part) : nullptr)) {
       const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
       if (part) {
         bool known = false;
@@ -296,7 +324,7 @@ class Sequencer {
     const std::vector<const Body*> obstacles = others({part}, remaining);
     const Body& moving = bodies_[part];
     const double threshold = settings_.clearance + settings_.tolerance;
-    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold)) {
+    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold, known_contacts(part))) {
       const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
       SequenceStep::Blocking b{d, {}};
       for (std::size_t i : remaining)

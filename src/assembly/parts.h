@@ -7,17 +7,35 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace swept::assembly_detail {
+
+/// A subtree of a body's tree whose triangles lie in one plane, to the mate rule's use: every
+/// triangle's outward normal n has |n − normal| ≤ spread, and every vertex v has
+/// lo ≤ normal·v ≤ hi. (`flat` false: the subtree holds triangles of other directions.)
+struct FlatNode {
+  bool flat = false;
+  Vec3 normal = Vec3::Zero();
+  double spread = 0.0;
+  double lo = 0.0, hi = 0.0;
+};
 
 /// A rigid body of the sequence: one part or a subassembly, world frame at the mounted pose.
 struct Body {
   std::vector<Triangle> triangles;     ///< input order (ids of the tree)
   std::vector<TrianglePlane> planes;   ///< plane_of(triangles[i])
   Bvh tree;
+  std::vector<FlatNode> flat;          ///< per node of `tree`
   Aabb box;
 };
+
+/// Does the mate rule hold for every triangle pair under node `ia` of `obstacle` and node `ib` of
+/// `moving`, by its first case along a flat node's normal (a face sliding along or leaving a
+/// face), for a pull of `length` along the unit `direction`? Conservative: false when unsure.
+bool nodes_mate(const Body& obstacle, std::int32_t ia, const Body& moving, std::int32_t ib, const Vec3& direction,
+                double length, double tolerance);
 
 /// The body of the given parts (merged in the given order).
 Body make_body(const Assembly& assembly, const std::vector<std::size_t>& parts, const BuildConfig& config);
@@ -28,10 +46,11 @@ struct PullSettings {
   double tolerance = 0.0;
 };
 
-/// Certifies the straight pull of `moving` by `length` along the unit `direction` against the
-/// `obstacles`, with the mate rule of contact.h (the only pairs allowed within the clearance).
-/// Counts distance queries into `queries`. When it is blocked (a pose at or below the clearance
-/// found) and `blocker` is given, the obstacle nearest at that pose: it blocks this pull on its own.
+/// Is the straight pull of `moving` by `length` along the unit `direction` clear of the
+/// `obstacles`, with the mate rule of contact.h (the only pairs allowed within the clearance)?
+/// Exact: one `sweep_translation` per obstacle the swept box comes near, counted into `queries`.
+/// When it is blocked and `blocker` is given, the first of those obstacles that blocks it: it
+/// blocks this pull on its own.
 bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles, const Vec3& direction,
                    double length, const PullSettings& settings, std::atomic<std::uint64_t>& queries,
                    const Body** blocker = nullptr);
@@ -40,10 +59,17 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
 /// (grown by `margin`): 0 when there are none.
 double exit_length(const Body& moving, const std::vector<const Body*>& obstacles, const Vec3& direction, double margin);
 
+/// Gap between two boxes (0 when they overlap).
+double box_gap(const Aabb& a, const Aabb& b);
+
 /// The directions to try, in order: +z, −z, +x, −x, +y, −y, then the outward normals of the
 /// obstacle triangles the body touches (within `threshold`) and the reversed normals of its own
 /// touching triangles, by contact area (at most 8), then the cross products of pairs of them
 /// (cylinder axes, both signs, at most 8 axes); each direction once.
-std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Body*>& obstacles, double threshold);
+/// `contacts`, when given, returns the contact pairs of an obstacle with `moving` (as
+/// `proximity_pairs(obstacle, moving)` at `threshold` gives them) when they are known, else null.
+std::vector<Vec3> pull_directions(
+    const Body& moving, const std::vector<const Body*>& obstacles, double threshold,
+    const std::function<const TrianglePairs*(const Body& obstacle)>& contacts = nullptr);
 
 }  // namespace swept::assembly_detail

@@ -6,6 +6,7 @@
 #include "swept/query/motion.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -16,11 +17,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Gap between two boxes (0 when they overlap).
-double box_gap(const Aabb& a, const Aabb& b) {
-  const Vec3 lo = (b.min - a.max).cwiseMax(a.min - b.max).cwiseMax(Vec3::Zero());
-  return lo.norm();
-}
 
 void add_unique(std::vector<Vec3>& out, const Vec3& v) {
   const double n = v.norm();
@@ -31,7 +27,86 @@ void add_unique(std::vector<Vec3>& out, const Vec3& v) {
   out.push_back(u);
 }
 
+// How far apart two normals of one flat node may be: a tessellated plane's facets agree to
+// rounding; a curved face's facets do not (and its nodes are left to the triangles).
+constexpr double kFlatSpread = 1e-6;
+
+std::vector<FlatNode> flat_nodes(const Bvh& tree, const std::vector<TrianglePlane>& planes) {
+  const std::size_t n = tree.nodes.size();
+  std::vector<FlatNode> out(n);
+  std::vector<std::pair<std::int32_t, std::int32_t>> range(n);  // triangles of the subtree
+  // Children come after their parent in `nodes` (level order, then depth-first blocks).
+  for (std::size_t k = n; k-- > 0;) {
+    const Node& node = tree.nodes[k];
+    bool children_flat = true;
+    if (node.is_leaf()) {
+      range[k] = {node.first, node.first + node.count};
+    } else {
+      const auto c = static_cast<std::size_t>(node.first);
+      SWEPT_ASSERT(c > k, "children after their parent");
+      range[k] = {std::min(range[c].first, range[c + 1].first), std::max(range[c].second, range[c + 1].second)};
+      children_flat = out[c].flat && out[c + 1].flat;
+    }
+    if (!children_flat) continue;
+    const auto [b, e] = range[k];
+    FlatNode f;
+    f.normal = planes[tree.triangle_ids[b]].normal;
+    if (f.normal.isZero()) continue;
+    f.lo = kInf;
+    f.hi = -kInf;
+    bool flat = true;
+    for (std::int32_t i = b; i < e && flat; ++i) {
+      const Vec3& m = planes[tree.triangle_ids[i]].normal;
+      f.spread = std::max(f.spread, (m - f.normal).norm());
+      flat = !m.isZero() && f.spread <= kFlatSpread;
+      for (int v = 0; v < 3; ++v) {
+        const double x = f.normal.dot(tree.triangles[i][v]);
+        f.lo = std::min(f.lo, x);
+        f.hi = std::max(f.hi, x);
+      }
+    }
+    f.flat = flat;
+    if (flat) out[k] = f;
+  }
+  return out;
+}
+
+// The smallest n·x over an RSS's volume, for a unit n.
+double rss_min_along(const Rss& r, const Vec3& n) {
+  return n.dot(r.center) - r.half_length[0] * std::abs(n.dot(r.axes.col(0))) -
+         r.half_length[1] * std::abs(n.dot(r.axes.col(1))) - r.radius;
+}
+
 }  // namespace
+
+double box_gap(const Aabb& a, const Aabb& b) {
+  const Vec3 lo = (b.min - a.max).cwiseMax(a.min - b.max).cwiseMax(Vec3::Zero());
+  return lo.norm();
+}
+
+bool nodes_mate(const Body& obstacle, std::int32_t ia, const Body& moving, std::int32_t ib, const Vec3& d,
+                double length, double tolerance) {
+  const Rss& ra = obstacle.tree.nodes[ia].bv;
+  const Rss& rb = moving.tree.nodes[ib].bv;
+  auto reach = [](const Rss& r) { return r.half_length[0] + r.half_length[1] + r.radius; };
+  // Any two points of the pair are at most this far apart; the same bound, 1e-9 of it, covers rounding.
+  const double span = (ra.center - rb.center).norm() + reach(ra) + reach(rb);
+  const double slack = 1e-9 * (span + ra.center.cwiseAbs().maxCoeff() + rb.center.cwiseAbs().maxCoeff());
+  // Case 1 of the mate rule with m = o's normal n, for every o under ia: with |n − N| ≤ ε,
+  // min_p n·v − max_o n·w ≥ (min over rb of N·x) − hi − ε·span, and n·d ≥ N·d − ε.
+  const FlatNode& fa = obstacle.flat[static_cast<std::size_t>(ia)];
+  if (fa.flat) {
+    const double gap = rss_min_along(rb, fa.normal) - fa.hi - fa.spread * span;
+    if (gap + length * std::min(0.0, fa.normal.dot(d) - fa.spread) >= -tolerance + slack) return true;
+  }
+  // ... and with m = −(p's normal) n, for every p under ib: min_o n·w − max_p n·v, and −n·d.
+  const FlatNode& fb = moving.flat[static_cast<std::size_t>(ib)];
+  if (fb.flat) {
+    const double gap = rss_min_along(ra, fb.normal) - fb.hi - fb.spread * span;
+    if (gap + length * std::min(0.0, -fb.normal.dot(d) - fb.spread) >= -tolerance + slack) return true;
+  }
+  return false;
+}
 
 Body make_body(const Assembly& assembly, const std::vector<std::size_t>& parts, const BuildConfig& config) {
   Body b;
@@ -49,6 +124,7 @@ Body make_body(const Assembly& assembly, const std::vector<std::size_t>& parts, 
   auto tree = build_bvh(b.triangles, config);
   SWEPT_ASSERT(tree.ok(), "read_assembly refuses empty parts and non-finite coordinates");
   b.tree = std::move(*tree);
+  b.flat = flat_nodes(b.tree, b.planes);
   return b;
 }
 
@@ -67,27 +143,56 @@ double exit_length(const Body& moving, const std::vector<const Body*>& obstacles
   return best;
 }
 
-std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Body*>& obstacles, double threshold) {
+std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Body*>& obstacles, double threshold,
+                                  const std::function<const TrianglePairs*(const Body& obstacle)>& contacts) {
   std::vector<Vec3> out{Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
-  // Contact normals by area, ties by first appearance (obstacle order, then pair order).
+  // Contact normals by area, ties by first appearance (obstacle order, then pair order). A normal
+  // joins the first-made group whose normal is within 1e-9 of its direction (e·n > 1 − 1e-9, so
+  // |e − n| < 4.5e-5); the groups are found through a grid of that cell size, so that a large
+  // contact (every facet of a fine cylinder its own normal) costs n log n, not n².
   std::vector<std::pair<Vec3, double>> normals;
-  auto add_normal = [&](const Vec3& n, double area) {
-    if (n.isZero()) return;
-    for (auto& [e, a] : normals)
-      if (e.dot(n) > 1.0 - 1e-9) {
-        a += area;
-        return;
-      }
-    normals.push_back({n, area});
+  constexpr double kCell = 4.5e-5;
+  std::map<std::array<std::int64_t, 3>, std::vector<std::size_t>> grid;
+  auto cell = [](const Vec3& n) {
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(n.x() / kCell)),
+                                       static_cast<std::int64_t>(std::floor(n.y() / kCell)),
+                                       static_cast<std::int64_t>(std::floor(n.z() / kCell))};
   };
+  // The group of a normal (made when none is near).
+  auto group_of = [&](const Vec3& n) {
+    const auto c = cell(n);
+    std::size_t first = normals.size();
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == grid.end()) continue;
+          for (std::size_t g : it->second)
+            if (g < first && normals[g].first.dot(n) > 1.0 - 1e-9) first = g;
+        }
+    if (first == normals.size()) {
+      grid[c].push_back(normals.size());
+      normals.push_back({n, 0.0});
+    }
+    return first;
+  };
+  // A triangle in many contact pairs adds its area once per pair; its group is looked up once.
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  auto add = [&](std::vector<std::size_t>& groups, std::uint32_t t, const Vec3& n, const Triangle& tri) {
+    if (n.isZero()) return;
+    if (groups[t] == kNone) groups[t] = group_of(n);
+    normals[groups[t]].second += 0.5 * (tri.q - tri.p).cross(tri.r - tri.p).norm();
+  };
+  std::vector<std::size_t> moving_groups(moving.triangles.size(), kNone), obstacle_groups;
   for (const Body* o : obstacles) {
     if (box_gap(o->box, moving.box) > threshold) continue;
-    const ProximityResult near = proximity_pairs(o->tree, Pose{}, moving.tree, Pose{}, {.threshold = threshold});
-    for (const ContactPair& p : near.pairs.pairs) {
-      const Triangle& to = o->triangles[p.triangle_a];
-      const Triangle& tp = moving.triangles[p.triangle_b];
-      add_normal(o->planes[p.triangle_a].normal, 0.5 * (to.q - to.p).cross(to.r - to.p).norm());
-      add_normal(-moving.planes[p.triangle_b].normal, 0.5 * (tp.q - tp.p).cross(tp.r - tp.p).norm());
+    const TrianglePairs* known = contacts ? contacts(*o) : nullptr;
+    TrianglePairs found;
+    if (!known) found = proximity_pairs(o->tree, Pose{}, moving.tree, Pose{}, {.threshold = threshold}).pairs;
+    obstacle_groups.assign(o->triangles.size(), kNone);
+    for (const ContactPair& p : (known ? *known : found).pairs) {
+      add(obstacle_groups, p.triangle_a, o->planes[p.triangle_a].normal, o->triangles[p.triangle_a]);
+      add(moving_groups, p.triangle_b, -moving.planes[p.triangle_b].normal, moving.triangles[p.triangle_b]);
     }
   }
   std::stable_sort(normals.begin(), normals.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
@@ -122,27 +227,24 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
     mates.emplace_back([o, &moving, d, length, tol = settings.tolerance](std::uint32_t a, std::uint32_t b) {
       return mate_allows(o->triangles[a], o->planes[a], moving.triangles[b], moving.planes[b], d, length, tol);
     });
-  std::size_t nearest = 0;  // the obstacle of the smallest bound at the last pose asked
-  auto bound = [&](const Pose& pose, double enough) {
-    double best = kInf;
-    for (std::size_t k = 0; k < near.size(); ++k) {
-      ++queries;
-      const double e = std::min(enough, best);
-      const DistanceResult r =
-          distance(near[k]->tree, Pose{}, moving.tree, pose, {.enough = e, .exclude_if = &mates[k]});
-      if (r.distance < best) best = r.distance, nearest = k;
+  std::vector<std::function<bool(std::int32_t, std::int32_t)>> node_mates;
+  node_mates.reserve(near.size());
+  for (const Body* o : near)
+    node_mates.emplace_back([o, &moving, d, length, tol = settings.tolerance](std::int32_t a, std::int32_t b) {
+      return nodes_mate(*o, a, moving, b, d, length, tol);
+    });
+  // One exact sweep of the translation per obstacle (sweep_translation): the mates along the
+  // pull are visited once, not at every pose a certificate would ask.
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    ++queries;
+    const SweepResult r = sweep_translation(near[k]->tree, Pose{}, moving.tree, Pose{},
+                                            {.translation = length * d, .margin = settings.clearance, .exclude_if = &mates[k], .exclude_nodes_if = &node_mates[k]});
+    if (!r.clear) {
+      if (blocker) *blocker = near[k];
+      return false;
     }
-    return best;
-  };
-  const Vec3 reference = moving.box.center();
-  const Motion motion{Pose{}, Pose::from_translation(length * d), reference, motion_radius(moving.tree, reference)};
-  const Certificate c = certify_motion(motion, bound, {.margin = settings.clearance});
-  if (blocker && c.status == MotionStatus::blocked) {
-    // Which part it was: asked again at the pose found (the certificate asks both ends first).
-    bound(Pose::from_translation(c.t_blocked * length * d), kInf);
-    *blocker = near[nearest];
   }
-  return c.clear();
+  return true;
 }
 
 }  // namespace swept::assembly_detail

@@ -60,6 +60,82 @@ TEST(Sequence, TheOldRuleWouldPullTheRingThroughTheBoltHead) {
   EXPECT_GT(pull_violations(a, {1}, {0, 2}, Vec3::UnitZ(), 25.0, 0.01, 0.2, 40), 0);
 }
 
+// A box whose faces are each meshed as an n × n grid (2n² triangles, outward), vertices shared
+// exactly along the box's edges: a large planar contact of many coplanar facets.
+std::vector<Triangle> fine_box(const Vec3& lo, const Vec3& hi, int n) {
+  std::vector<Triangle> out;
+  auto at = [&](int axis, int i) { return lo[axis] + (hi[axis] - lo[axis]) * i / n; };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      Vec3 outward = Vec3::Zero();
+      outward[axis] = side ? 1.0 : -1.0;
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          auto corner = [&](int di, int dj) {
+            Vec3 x;
+            x[axis] = side ? hi[axis] : lo[axis];
+            x[u] = at(u, i + di);
+            x[v] = at(v, j + dj);
+            return x;
+          };
+          for (Triangle t : {Triangle{corner(0, 0), corner(1, 0), corner(1, 1)}, Triangle{corner(0, 0), corner(1, 1), corner(0, 1)}}) {
+            if ((t.q - t.p).cross(t.r - t.p).dot(outward) < 0) std::swap(t.q, t.r);
+            out.push_back(t);
+          }
+        }
+    }
+  return out;
+}
+
+TEST(Sequence, APlateSlidesOutAlongItsFinelyMeshedBase) {
+  // A plate lies face to face on a base (both faces meshed fine), under a roof 0.5 above it, with
+  // a fence 5 in front of it (+x): up is the roof, down the base, +x the fence; it can only slide
+  // out along −x, over the whole length of the base's top, every facet pair of the two faces at 0.
+  Assembly a;
+  a.source = "sliding_plate";
+  a.parts = {part("base", fine_box(Vec3(0, 0, 0), Vec3(100, 100, 10), 6), true),
+             part("plate", fine_box(Vec3(30, 30, 10), Vec3(50, 50, 15), 6)),
+             part("roof", fine_box(Vec3(20, 20, 15.5), Vec3(60, 60, 20), 2), true),
+             part("fence", fine_box(Vec3(55, 20, 10), Vec3(60, 60, 15), 2), true)};
+  const DisassemblyOptions options{.clearance = 0.01, .tolerance = 0.2, .plan_time_limit = 0};
+  const DisassemblyResult r = disassemble(a, options);
+  EXPECT_TRUE(r.interferences.empty());
+  ASSERT_TRUE(r.complete);
+  ASSERT_EQ(r.sequence.size(), 1u);
+  EXPECT_EQ(r.sequence[0].parts, std::vector<std::size_t>{1});
+  EXPECT_EQ(r.sequence[0].method, RemovalMethod::pull);
+  EXPECT_TRUE(r.sequence[0].direction.isApprox(-Vec3::UnitX())) << r.sequence[0].direction.transpose();
+  EXPECT_GT(r.sequence[0].distance, 50.0);  // past the base's far edge
+  check_pulls_independently(a, r, options.clearance, 20);
+  // And the pulls it rejected do pass through material (the independent check says so).
+  EXPECT_GT(pull_violations(a, {1}, {0, 2, 3}, Vec3::UnitZ(), 10.0, 0.01, 0.2, 20), 0);
+  EXPECT_GT(pull_violations(a, {1}, {0, 2, 3}, -Vec3::UnitZ(), 10.0, 0.01, 0.2, 20), 0);
+  EXPECT_GT(pull_violations(a, {1}, {0, 2, 3}, Vec3::UnitX(), 60.0, 0.01, 0.2, 20), 0);
+}
+
+TEST(Sequence, APlateOnAnOpenSheetDoesNotPressThroughIt) {
+  // The same with the base reduced to its top face, an open sheet: nothing behind it would stop
+  // a plate pressed down through it, so only the mate rule on the facing facets does (a face may
+  // slide along or leave another, never press into it).
+  std::vector<Triangle> sheet;
+  for (const Triangle& t : fine_box(Vec3(0, 0, 0), Vec3(100, 100, 10), 6))
+    if (t.p.z() == 10 && t.q.z() == 10 && t.r.z() == 10) sheet.push_back(t);
+  ASSERT_EQ(sheet.size(), 72u);
+  Assembly a;
+  a.source = "plate_on_a_sheet";
+  a.parts = {part("sheet", sheet, true), part("plate", fine_box(Vec3(30, 30, 10), Vec3(50, 50, 15), 6)),
+             part("roof", fine_box(Vec3(20, 20, 15.5), Vec3(60, 60, 20), 2), true),
+             part("fence", fine_box(Vec3(55, 20, 10), Vec3(60, 60, 15), 2), true)};
+  const DisassemblyOptions options{.clearance = 0.01, .tolerance = 0.2, .plan_time_limit = 0};
+  const DisassemblyResult r = disassemble(a, options);
+  ASSERT_TRUE(r.complete);
+  ASSERT_EQ(r.sequence.size(), 1u);
+  EXPECT_TRUE(r.sequence[0].direction.isApprox(-Vec3::UnitX())) << r.sequence[0].direction.transpose();
+  check_pulls_independently(a, r, options.clearance, 20);
+  EXPECT_GT(pull_violations(a, {1}, {0, 2, 3}, -Vec3::UnitZ(), 10.0, 0.01, 0.2, 20), 0);
+}
+
 TEST(Sequence, RivetedPlatesAreReportedWithTheirBlockers) {
   const Assembly a = riveted_plates();
   const DisassemblyOptions options{.clearance = 0.01, .tolerance = 0.2, .plan_time_limit = 0.5};
