@@ -184,7 +184,7 @@ void run(const DisassembleCliOptions& o) {
     std::cout << ")\n"
               << "time         total " << fmt_fixed(total_ms, 1) << " ms (read " << fmt_fixed(read_ms, 1) << ", build "
               << fmt_fixed(r.time_ms.build, 1) << ", interference " << fmt_fixed(r.time_ms.interference, 1)
-              << ", sequence " << fmt_fixed(r.time_ms.sequence, 1) << "), distance queries " << r.distance_queries
+              << ", sequence " << fmt_fixed(r.time_ms.sequence, 1) << "), queries " << r.distance_queries << " (pull sweeps and planner distances)"
               << "\n";
     if (!o.output_dir.empty()) std::cout << "written      path files in " << o.output_dir << "\n";
     if (!o.view.empty()) std::cout << "written      " << o.view << "\n";

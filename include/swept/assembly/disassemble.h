@@ -67,6 +67,8 @@ struct DisassemblyResult {
   struct {
     double build = 0, interference = 0, sequence = 0;
   } time_ms;
+  /// Queries made: one exact sweep (sweep_translation) per obstacle a pull comes near, and the
+  /// planner's distance queries when it was asked.
   std::uint64_t distance_queries = 0;
 };
 
