@@ -63,7 +63,7 @@ class Sequencer {
     std::vector<bool> is_fixed(n, false);
     for (std::size_t i : out.fixed) is_fixed[i] = true;
     touching_ = contact_graph();
-    contacts_ = contact_pairs(is_fixed);
+    contacts_ = contact_facets(is_fixed);
     blocked_pulls_.assign(n, {});
     std::vector<std::size_t> remaining(n);
     std::iota(remaining.begin(), remaining.end(), std::size_t{0});
@@ -117,9 +117,9 @@ class Sequencer {
   std::vector<Body> bodies_;
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
-  /// contacts_[i][j]: the contact pairs of part j (as A) with movable part i (as B) at the
-  /// mounted poses, for pull_directions, which asks for them in every round.
-  std::vector<std::vector<TrianglePairs>> contacts_;
+  /// contacts_[i][j]: the triangles of the contact of part j (the obstacle) with movable part i at
+  /// the mounted poses (contact_facets), for pull_directions, which asks for them in every round.
+  std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> contacts_;
   std::atomic<std::uint64_t> queries_{0};
   /// Pulls found blocked, per part: the direction, the length and the part that blocks it on its
   /// own. Removing other parts cannot clear it (the same pull meets the same pose), so while that
@@ -168,12 +168,14 @@ class Sequencer {
     return g;
   }
 
-  // The contact pairs pull_directions needs, once: for every movable part and every other part
+  // The contact facets pull_directions needs, once: for every movable part and every other part
   // whose box comes within clearance + tolerance of its box, in parallel.
-  std::vector<std::vector<TrianglePairs>> contact_pairs(const std::vector<bool>& is_fixed) const {
+  std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> contact_facets(
+      const std::vector<bool>& is_fixed) const {
     const std::size_t n = bodies_.size();
     const double threshold = settings_.clearance + settings_.tolerance;
-    std::vector<std::vector<TrianglePairs>> out(n, std::vector<TrianglePairs>(n));
+    std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> out(
+        n, std::vector<std::vector<assembly_detail::ContactFacet>>(n));
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j)
@@ -181,13 +183,15 @@ class Sequencer {
           pairs.push_back({i, j});
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
       const auto [i, j] = pairs[k];
-      out[i][j] = proximity_pairs(bodies_[j].tree, Pose{}, bodies_[i].tree, Pose{}, {.threshold = threshold}).pairs;
+      const ProximityResult near =
+          proximity_pairs(bodies_[j].tree, Pose{}, bodies_[i].tree, Pose{}, {.threshold = threshold});
+      out[i][j] = assembly_detail::contact_facets(near.pairs, bodies_[j].triangles.size(), bodies_[i].triangles.size());
     });
     return out;
   }
 
-  // The known contact pairs of a single part, for pull_directions.
-  std::function<const TrianglePairs*(const Body&)> known_contacts(std::size_t part) const {
+  // The known contact facets of a single part, for pull_directions.
+  std::function<const std::vector<assembly_detail::ContactFacet>*(const Body&)> known_contacts(std::size_t part) const {
     return [this, part](const Body& o) { return &contacts_[part][static_cast<std::size_t>(&o - bodies_.data())]; };
   }
 

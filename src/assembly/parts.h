@@ -59,6 +59,17 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
 /// (grown by `margin`): 0 when there are none.
 double exit_length(const Body& moving, const std::vector<const Body*>& obstacles, const Vec3& direction, double margin);
 
+/// A triangle of a contact between an obstacle and the moving body: its index in the obstacle's
+/// or (`moving`) in the moving body's triangles.
+struct ContactFacet {
+  std::uint32_t triangle = 0;
+  bool moving = false;
+};
+/// The triangles of `pairs` (as `proximity_pairs(obstacle, moving)` gives them), each once, in the
+/// order the pairs first name them (a pair's obstacle triangle before its moving one).
+std::vector<ContactFacet> contact_facets(const TrianglePairs& pairs, std::size_t obstacle_triangles,
+                                         std::size_t moving_triangles);
+
 /// Gap between two boxes (0 when they overlap).
 double box_gap(const Aabb& a, const Aabb& b);
 
@@ -66,10 +77,10 @@ double box_gap(const Aabb& a, const Aabb& b);
 /// obstacle triangles the body touches (within `threshold`) and the reversed normals of its own
 /// touching triangles, by contact area (at most 8), then the cross products of pairs of them
 /// (cylinder axes, both signs, at most 8 axes); each direction once.
-/// `contacts`, when given, returns the contact pairs of an obstacle with `moving` (as
-/// `proximity_pairs(obstacle, moving)` at `threshold` gives them) when they are known, else null.
+/// `contacts`, when given, returns the contact_facets of an obstacle with `moving` (at
+/// `threshold`) when they are known, else null.
 std::vector<Vec3> pull_directions(
     const Body& moving, const std::vector<const Body*>& obstacles, double threshold,
-    const std::function<const TrianglePairs*(const Body& obstacle)>& contacts = nullptr);
+    const std::function<const std::vector<ContactFacet>*(const Body& obstacle)>& contacts = nullptr);
 
 }  // namespace swept::assembly_detail

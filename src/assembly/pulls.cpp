@@ -79,6 +79,17 @@ double rss_min_along(const Rss& r, const Vec3& n) {
 
 }  // namespace
 
+std::vector<ContactFacet> contact_facets(const TrianglePairs& pairs, std::size_t obstacle_triangles,
+                                         std::size_t moving_triangles) {
+  std::vector<ContactFacet> out;
+  std::vector<bool> seen_obstacle(obstacle_triangles, false), seen_moving(moving_triangles, false);
+  for (const ContactPair& p : pairs.pairs) {
+    if (!seen_obstacle[p.triangle_a]) seen_obstacle[p.triangle_a] = true, out.push_back({p.triangle_a, false});
+    if (!seen_moving[p.triangle_b]) seen_moving[p.triangle_b] = true, out.push_back({p.triangle_b, true});
+  }
+  return out;
+}
+
 double box_gap(const Aabb& a, const Aabb& b) {
   const Vec3 lo = (b.min - a.max).cwiseMax(a.min - b.max).cwiseMax(Vec3::Zero());
   return lo.norm();
@@ -144,12 +155,13 @@ double exit_length(const Body& moving, const std::vector<const Body*>& obstacles
 }
 
 std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Body*>& obstacles, double threshold,
-                                  const std::function<const TrianglePairs*(const Body& obstacle)>& contacts) {
+                                  const std::function<const std::vector<ContactFacet>*(const Body& obstacle)>& contacts) {
   std::vector<Vec3> out{Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
-  // Contact normals by area, ties by first appearance (obstacle order, then pair order). A normal
-  // joins the first-made group whose normal is within 1e-9 of its direction (e·n > 1 − 1e-9, so
-  // |e − n| < 4.5e-5); the groups are found through a grid of that cell size, so that a large
-  // contact (every facet of a fine cylinder its own normal) costs n log n, not n².
+  // Contact normals by contact area (each touching triangle's area once per obstacle it touches),
+  // ties by first appearance (obstacle order, then pair order). A normal joins the first-made
+  // group whose normal is within 1e-9 of its direction (e·n > 1 − 1e-9, so |e − n| < 4.5e-5);
+  // the groups are found through a grid of that cell size, so that a large contact (every facet
+  // of a fine cylinder its own normal) costs n log n, not n².
   std::vector<std::pair<Vec3, double>> normals;
   constexpr double kCell = 4.5e-5;
   std::map<std::array<std::int64_t, 3>, std::vector<std::size_t>> grid;
@@ -158,8 +170,8 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
                                        static_cast<std::int64_t>(std::floor(n.y() / kCell)),
                                        static_cast<std::int64_t>(std::floor(n.z() / kCell))};
   };
-  // The group of a normal (made when none is near).
-  auto group_of = [&](const Vec3& n) {
+  auto add = [&](const Vec3& n, const Triangle& t) {
+    if (n.isZero()) return;
     const auto c = cell(n);
     std::size_t first = normals.size();
     for (std::int64_t dx = -1; dx <= 1; ++dx)
@@ -174,25 +186,18 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
       grid[c].push_back(normals.size());
       normals.push_back({n, 0.0});
     }
-    return first;
+    normals[first].second += 0.5 * (t.q - t.p).cross(t.r - t.p).norm();
   };
-  // A triangle in many contact pairs adds its area once per pair; its group is looked up once.
-  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  auto add = [&](std::vector<std::size_t>& groups, std::uint32_t t, const Vec3& n, const Triangle& tri) {
-    if (n.isZero()) return;
-    if (groups[t] == kNone) groups[t] = group_of(n);
-    normals[groups[t]].second += 0.5 * (tri.q - tri.p).cross(tri.r - tri.p).norm();
-  };
-  std::vector<std::size_t> moving_groups(moving.triangles.size(), kNone), obstacle_groups;
   for (const Body* o : obstacles) {
     if (box_gap(o->box, moving.box) > threshold) continue;
-    const TrianglePairs* known = contacts ? contacts(*o) : nullptr;
-    TrianglePairs found;
-    if (!known) found = proximity_pairs(o->tree, Pose{}, moving.tree, Pose{}, {.threshold = threshold}).pairs;
-    obstacle_groups.assign(o->triangles.size(), kNone);
-    for (const ContactPair& p : (known ? *known : found).pairs) {
-      add(obstacle_groups, p.triangle_a, o->planes[p.triangle_a].normal, o->triangles[p.triangle_a]);
-      add(moving_groups, p.triangle_b, -moving.planes[p.triangle_b].normal, moving.triangles[p.triangle_b]);
+    const std::vector<ContactFacet>* known = contacts ? contacts(*o) : nullptr;
+    std::vector<ContactFacet> found;
+    if (!known)
+      found = contact_facets(proximity_pairs(o->tree, Pose{}, moving.tree, Pose{}, {.threshold = threshold}).pairs,
+                             o->triangles.size(), moving.triangles.size());
+    for (const ContactFacet& f : known ? *known : found) {
+      if (f.moving) add(-moving.planes[f.triangle].normal, moving.triangles[f.triangle]);
+      else add(o->planes[f.triangle].normal, o->triangles[f.triangle]);
     }
   }
   std::stable_sort(normals.begin(), normals.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
