@@ -1,12 +1,14 @@
 // Micro-benchmarks of the proximity queries against FCL 0.7 (OBBRSS) in the same run:
 // collide and distance on a CAD mesh pair at near-contact and far poses, and distance along
 // straight motions with and without coherence (each query hinted with the previous one's
-// closest pair: DistanceRequest::hint).
+// closest pair: DistanceRequest::hint), and pure translations certified step by step against
+// checked exactly in one traversal (sweep_translation).
 //   bench_queries [--benchmark_filter=...]      (mesh pair: SWEPT_BENCH_A / SWEPT_BENCH_B,
 //                                                default occt/motor.stl against itself)
 #include "swept/bench/fcl_model.h"
 #include "swept/bench/pose_sets.h"
 #include "swept/io/mesh_io.h"
+#include "swept/query/motion.h"
 #include "swept/query/query.h"
 
 #include <benchmark/benchmark.h>
@@ -141,6 +143,38 @@ void BM_FclDistancePath(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * f.path.size()));
 }
+// Pure translations from each far pose to its near-contact pose's position (the far rotation
+// kept), clear by more than 0: argument 0 certifies each with the certificate (motion_clearance),
+// 1 checks it exactly with sweep_translation. Counter `clear`: motions found clear (the same for
+// both; the benchmark stops with an error if they differ).
+void BM_SweptTranslation(benchmark::State& state) {
+  const Fixture& f = Fixture::get();
+  const bool sweep = state.range(0) == 1;
+  const std::size_t n = std::min(f.near.size(), f.far.size());
+  const Vec3 reference = Vec3::Zero();
+  const double radius = motion_radius(f.b, reference);
+  auto clear_by = [&](std::size_t k, bool use_sweep) {
+    const Pose from = f.far[k];
+    const Vec3 shift = f.near[k].translation - from.translation;
+    if (use_sweep) return sweep_translation(f.a, {}, f.b, from, {.translation = shift}).clear;
+    const Pose to{from.rotation, from.translation + shift};
+    return motion_clearance(f.a, {}, f.b, {from, to, reference, radius}).clear();
+  };
+  for (std::size_t k = 0; k < n; ++k)
+    if (clear_by(k, true) != clear_by(k, false)) {
+      state.SkipWithError("the sweep and the certificate disagree");
+      return;
+    }
+  std::size_t clear = 0;
+  for (auto _ : state) {
+    clear = 0;
+    for (std::size_t k = 0; k < n; ++k) clear += clear_by(k, sweep) ? 1 : 0;
+  }
+  state.counters["clear"] = static_cast<double>(clear);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_SweptTranslation)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_SweptDistancePath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FclDistancePath)->Unit(benchmark::kMillisecond);
 
