@@ -63,7 +63,7 @@ class Sequencer {
     std::vector<bool> is_fixed(n, false);
     for (std::size_t i : out.fixed) is_fixed[i] = true;
     touching_ = contact_graph();
-    contacts_ = contact_facets(is_fixed);
+    contacts_ = find_contacts(is_fixed);
     blocked_pulls_.assign(n, {});
     std::vector<std::size_t> remaining(n);
     std::iota(remaining.begin(), remaining.end(), std::size_t{0});
@@ -118,7 +118,8 @@ class Sequencer {
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
   /// contacts_[i][j]: the triangles of the contact of part j (the obstacle) with movable part i at
-  /// the mounted poses (contact_facets), for pull_directions, which asks for them in every round.
+  /// the mounted poses (assembly_detail::contact_facets), for pull_directions, which asks for
+  /// them in every round.
   std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> contacts_;
   std::atomic<std::uint64_t> queries_{0};
   /// Pulls found blocked, per part: the direction, the length and the part that blocks it on its
@@ -170,7 +171,7 @@ class Sequencer {
 
   // The contact facets pull_directions needs, once: for every movable part and every other part
   // whose box comes within clearance + tolerance of its box, in parallel.
-  std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> contact_facets(
+  std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> find_contacts(
       const std::vector<bool>& is_fixed) const {
     const std::size_t n = bodies_.size();
     const double threshold = settings_.clearance + settings_.tolerance;

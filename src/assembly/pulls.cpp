@@ -222,30 +222,23 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
   Aabb swept = moving.box;
   swept.extend(Aabb{moving.box.min + length * d, moving.box.max + length * d});
   const double reach = settings.clearance + settings.tolerance;
-  std::vector<const Body*> near;
-  for (const Body* o : obstacles)
-    if (box_gap(o->box, swept) <= reach) near.push_back(o);
-  if (near.empty()) return true;
-  std::vector<std::function<bool(std::uint32_t, std::uint32_t)>> mates;
-  mates.reserve(near.size());
-  for (const Body* o : near)
-    mates.emplace_back([o, &moving, d, length, tol = settings.tolerance](std::uint32_t a, std::uint32_t b) {
+  // One exact sweep of the translation per obstacle the swept box comes near (sweep_translation):
+  // the mates along the pull are visited once, not at every pose a certificate would ask.
+  const double tol = settings.tolerance;
+  for (const Body* o : obstacles) {
+    if (box_gap(o->box, swept) > reach) continue;
+    const std::function<bool(std::uint32_t, std::uint32_t)> mates = [&](std::uint32_t a, std::uint32_t b) {
       return mate_allows(o->triangles[a], o->planes[a], moving.triangles[b], moving.planes[b], d, length, tol);
-    });
-  std::vector<std::function<bool(std::int32_t, std::int32_t)>> node_mates;
-  node_mates.reserve(near.size());
-  for (const Body* o : near)
-    node_mates.emplace_back([o, &moving, d, length, tol = settings.tolerance](std::int32_t a, std::int32_t b) {
+    };
+    const std::function<bool(std::int32_t, std::int32_t)> node_mates = [&](std::int32_t a, std::int32_t b) {
       return nodes_mate(*o, a, moving, b, d, length, tol);
-    });
-  // One exact sweep of the translation per obstacle (sweep_translation): the mates along the
-  // pull are visited once, not at every pose a certificate would ask.
-  for (std::size_t k = 0; k < near.size(); ++k) {
+    };
     ++queries;
-    const SweepResult r = sweep_translation(near[k]->tree, Pose{}, moving.tree, Pose{},
-                                            {.translation = length * d, .margin = settings.clearance, .exclude_if = &mates[k], .exclude_nodes_if = &node_mates[k]});
+    const SweepResult r = sweep_translation(o->tree, Pose{}, moving.tree, Pose{},
+                                            {.translation = length * d, .margin = settings.clearance,
+                                             .exclude_if = &mates, .exclude_nodes_if = &node_mates});
     if (!r.clear) {
-      if (blocker) *blocker = near[k];
+      if (blocker) *blocker = o;
       return false;
     }
   }

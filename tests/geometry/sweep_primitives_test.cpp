@@ -16,22 +16,11 @@ namespace {
 
 using test::Rng;
 
-oracle::Tri shifted(const Triangle& t, const Vec3& s) { return {{t.p + s, t.q + s, t.r + s}}; }
+oracle::Tri to_oracle(const Triangle& t) { return {{t.p, t.q, t.r}}; }
 
 // min over τ ∈ [0, 1] of the oracle distance between a and b + τ·sweep.
 double oracle_sweep_minimum(const Triangle& a, const Triangle& b, const Vec3& sweep) {
-  auto f = [&](double t) { return oracle::triangle_distance(shifted(a, Vec3::Zero()), shifted(b, t * sweep)); };
-  double lo = 0.0, hi = 1.0;
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < 120; ++i) {
-    if (f1 <= f2) {
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
-    } else {
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
-    }
-  }
-  return std::min({f1, f2, f(0.0), f(1.0)});
+  return oracle::translation_minimum(to_oracle(a), to_oracle(b), sweep);
 }
 
 TEST(SweepPrimitives, TriangleSweepWithinAgreesWithTheOracle) {

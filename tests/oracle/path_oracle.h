@@ -74,6 +74,10 @@ PathCheckReport check_path(const PathCheckInput& input);
 /// else the smallest of the vertex–triangle and edge–edge distances. Never NaN for finite input.
 double triangle_distance(const Tri& a, const Tri& b);
 
+/// The smallest triangle_distance between `a` and `b` moved by t·sweep over t ∈ [0, 1]: golden
+/// section on the distance, which is convex in a translation of one convex set, plus both ends.
+double translation_minimum(const Tri& a, const Tri& b, const Eigen::Vector3d& sweep);
+
 /// Exact smallest distance between two triangle sets in the same frame (+∞ if one is empty).
 double exact_distance(const std::vector<Tri>& obstacles_world, const std::vector<Tri>& body_world);
 

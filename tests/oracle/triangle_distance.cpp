@@ -140,4 +140,23 @@ double triangle_distance(const Tri& a, const Tri& b) {
   return std::sqrt(best);
 }
 
+double translation_minimum(const Tri& a, const Tri& b, const Eigen::Vector3d& sweep) {
+  auto f = [&](double t) {
+    Tri m = b;
+    for (auto& v : m.v) v += t * sweep;
+    return triangle_distance(a, m);
+  };
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  double lo = 0.0, hi = 1.0;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < 120; ++i) {
+    if (f1 <= f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
+    }
+  }
+  return std::min({f1, f2, f(0.0), f(1.0)});
+}
+
 }  // namespace oracle

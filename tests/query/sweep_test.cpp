@@ -22,16 +22,7 @@ oracle::Tri moved(const Triangle& t, const Pose& pose, const Vec3& shift) {
 
 // Smallest distance between a (at pose_a) and b (at pose_b, then moved by τ·translation).
 double pair_minimum(const Triangle& a, const Pose& pa, const Triangle& b, const Pose& pb, const Vec3& translation) {
-  const oracle::Tri ta = moved(a, pa, Vec3::Zero());
-  auto f = [&](double t) { return oracle::triangle_distance(ta, moved(b, pb, t * translation)); };
-  double lo = 0.0, hi = 1.0;
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < 100; ++i) {
-    if (f1 <= f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
-    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
-  }
-  return std::min({f1, f2, f(0.0), f(1.0)});
+  return oracle::translation_minimum(moved(a, pa, Vec3::Zero()), moved(b, pb, Vec3::Zero()), translation);
 }
 
 TEST(SweepTranslation, MatchesBruteForceWithAndWithoutARule) {
