@@ -47,7 +47,7 @@ void run(const BvhOptions& o) {
      << base << " | build ms |\n"
      << "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   Table table({"file", "fitter", "split", "triangles", "nodes", "depth", "total SA", "total volume",
-               "build ms", "bytes"});
+               "build ms", "bytes", "bytes/tri"});
   for (const std::string& file : o.files) {
     auto model = import_mesh(file, o.import.import_options());
     if (!model) throw std::runtime_error(model.error().message);
@@ -65,9 +65,11 @@ void run(const BvhOptions& o) {
         if (!bvh) throw std::runtime_error(file + ": " + bvh.error().message);
         const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
         const BvhStats st = stats(*bvh);
+        const double per_triangle = static_cast<double>(st.bytes) / static_cast<double>(st.triangles);
         rows.push_back({{"fitter", to_string(f)}, {"split", to_string(s)}, {"nodes", st.nodes},
                         {"depth", st.depth}, {"total_surface_area", st.total_surface_area},
-                        {"total_volume", st.total_volume}, {"build_ms", ms}, {"bytes", st.bytes}});
+                        {"total_volume", st.total_volume}, {"build_ms", ms}, {"leaf_size", o.leaf_size},
+                        {"bytes", st.bytes}, {"bytes_per_triangle", per_triangle}});
         if (f == all_fitters().front().fitter) base_stats[s] = st;
         auto ratio = [&](double v, double ref) { return base_stats.count(s) && ref > 0 ? fmt_fixed(v / ref, 3) : std::string("–"); };
         md << "| " << std::filesystem::path(file).filename().string() << " | " << st.triangles << " | " << to_string(f) << " | "
@@ -77,7 +79,7 @@ void run(const BvhOptions& o) {
            << ratio(st.total_volume, base_stats.count(s) ? base_stats[s].total_volume : 0) << " | " << fmt_fixed(ms, 1) << " |\n";
         table.add({file, std::string(to_string(f)), std::string(to_string(s)), fmt_int(st.triangles),
                    fmt_int(st.nodes), std::to_string(st.depth), fmt_sci(st.total_surface_area),
-                   fmt_sci(st.total_volume), fmt_fixed(ms, 1), fmt_int(st.bytes)});
+                   fmt_sci(st.total_volume), fmt_fixed(ms, 1), fmt_int(st.bytes), fmt_fixed(per_triangle, 0)});
       }
     }
     entry["fitters"] = rows;

@@ -20,8 +20,9 @@
 namespace swept {
 
 std::size_t Bvh::memory_bytes() const {
-  return nodes.size() * sizeof(Node) + triangles.size() * sizeof(Triangle) +
-         triangle_ids.size() * sizeof(std::uint32_t) + sizeof(Bvh);
+  // What the arrays hold, not only what they use (a build reserves for 2n − 1 nodes).
+  return nodes.capacity() * sizeof(Node) + triangles.capacity() * sizeof(Triangle) +
+         triangle_ids.capacity() * sizeof(std::uint32_t) + sizeof(Bvh);
 }
 
 BvhStats stats(const Bvh& bvh) {

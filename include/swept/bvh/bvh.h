@@ -78,11 +78,14 @@ bool parse_split_rule(std::string_view text, SplitRule& out);
 /// The largest leaf size a build accepts.
 inline constexpr int kMaxLeafSize = 1 << 16;
 
+/// Triangles per leaf when nothing else is asked for (docs/fitters.md, "Leaf size").
+inline constexpr int kDefaultLeafSize = 1;
+
 /// Build options. The defaults are the paper's method with IPS CDC's split rule.
 struct BuildConfig {
   Fitter fitter = Fitter::inertia;
   SplitRule split = SplitRule::min_sa;
-  int leaf_size = 1;       ///< a node with at most this many triangles is a leaf (1 … kMaxLeafSize)
+  int leaf_size = kDefaultLeafSize;  ///< a node with at most this many triangles is a leaf (1 … kMaxLeafSize)
   bool parallel = true;    ///< use oneTBB; the tree is identical either way
 };
 
@@ -108,7 +111,7 @@ struct Bvh {
   double extent = 0.0;                    ///< diagonal of the model's bounding box
 
   bool empty() const { return nodes.empty(); }
-  /// Bytes held by the tree (nodes, triangles and ids).
+  /// Bytes held by the tree: its arrays' capacity (nodes, triangles and ids) and the struct.
   std::size_t memory_bytes() const;
 };
 
