@@ -3,6 +3,7 @@
 #include "swept/bench/fcl_model.h"
 
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/detail/traversal/distance/mesh_distance_traversal_node.h>
 #include <fcl/narrowphase/distance.h>
 
 namespace swept::bench {
@@ -15,7 +16,8 @@ struct FclMesh::Impl {
   std::shared_ptr<fcl::CollisionGeometryd> geometry;
 };
 
-FclMesh::FclMesh(std::span<const Triangle> triangles, FclVolume volume) : impl_(std::make_unique<Impl>()) {
+FclMesh::FclMesh(std::span<const Triangle> triangles, FclVolume volume)
+    : impl_(std::make_unique<Impl>()), volume_(volume) {
   if (volume == FclVolume::obbrss)
     impl_->geometry = fcl_model<fcl::OBBRSSd>(triangles);
   else
@@ -39,6 +41,34 @@ double FclMesh::distance(const Pose& pose, const FclMesh& other, const Pose& oth
   fcl::distance(impl_->geometry.get(), to_fcl(pose), other.impl_->geometry.get(), to_fcl(other_pose),
                 request, result);
   return result.min_distance;
+}
+
+namespace {
+
+// fcl::distance for two meshes of one volume type, as FCL's own orientedMeshDistance runs it
+// (its traversal node, initialize, fcl::detail::distance), with the node's statistics on.
+template <class TraversalNode, class BV>
+FclDistanceStats counted_distance(const fcl::CollisionGeometryd* a, const Pose& pose, const fcl::CollisionGeometryd* b,
+                                  const Pose& other_pose) {
+  fcl::DistanceRequestd request;
+  request.enable_nearest_points = true;
+  fcl::DistanceResultd result;
+  TraversalNode node;
+  fcl::detail::initialize(node, *static_cast<const fcl::BVHModel<BV>*>(a), to_fcl(pose),
+                          *static_cast<const fcl::BVHModel<BV>*>(b), to_fcl(other_pose), request, result);
+  node.enableStatistics(true);
+  fcl::detail::distance(&node);
+  return {result.min_distance, node.num_bv_tests, node.num_leaf_tests};
+}
+
+}  // namespace
+
+FclDistanceStats FclMesh::distance_stats(const Pose& pose, const FclMesh& other, const Pose& other_pose) const {
+  if (volume_ == FclVolume::obbrss)
+    return counted_distance<fcl::detail::MeshDistanceTraversalNodeOBBRSS<double>, fcl::OBBRSSd>(
+        impl_->geometry.get(), pose, other.impl_->geometry.get(), other_pose);
+  return counted_distance<fcl::detail::MeshDistanceTraversalNodeRSS<double>, fcl::RSSd>(
+      impl_->geometry.get(), pose, other.impl_->geometry.get(), other_pose);
 }
 
 }  // namespace swept::bench

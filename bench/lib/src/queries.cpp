@@ -60,6 +60,7 @@ struct EngineResult {
   std::string engine;
   double collide_us = 0, distance_us = 0, tolerance_us = 0;
   double bv_tests = -1;  ///< mean BV tests per distance query; < 0: not reported by the engine
+  double bytes_per_triangle = -1;  ///< both trees' memory over both meshes' triangles; < 0: not reported
 };
 
 }  // namespace
@@ -73,18 +74,25 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
     std::string name;
     Bvh a, b;
   };
+  if (o.leaf_sizes.empty()) throw std::runtime_error("--leaf-size needs at least one size");
   std::vector<SweptEngine> swept_engines;
   // The paper's method first: its trees draw the pose sets and are the reference of the distance
-  // comparison and the batch; then the rest of the fitter table, in its order.
+  // comparison and the batch; then the rest of the fitter table, in its order; each fitter at
+  // every leaf size asked for (named with its leaf size when there are several).
   std::vector<Fitter> fitters{Fitter::inertia};
   for (const FitterInfo& f : all_fitters())
     if (f.fitter != Fitter::inertia) fitters.push_back(f.fitter);
-  for (const Fitter f : fitters) {
-    Result<Bvh> a = build_bvh(ta, {.fitter = f});
-    if (!a) throw std::runtime_error(o.file_a + ": " + a.error().message);
-    Result<Bvh> b = build_bvh(tb, {.fitter = f});
-    if (!b) throw std::runtime_error(o.file_b + ": " + b.error().message);
-    swept_engines.push_back({"swept-" + std::string(to_string(f)), std::move(a).value(), std::move(b).value()});
+  for (const int leaf : o.leaf_sizes) {
+    for (const Fitter f : fitters) {
+      const BuildConfig config{.fitter = f, .split = o.split, .leaf_size = leaf};
+      Result<Bvh> a = build_bvh(ta, config);
+      if (!a) throw std::runtime_error(o.file_a + ": " + a.error().message);
+      Result<Bvh> b = build_bvh(tb, config);
+      if (!b) throw std::runtime_error(o.file_b + ": " + b.error().message);
+      std::string name = "swept-" + std::string(to_string(f));
+      if (o.leaf_sizes.size() > 1) name += "/leaf" + std::to_string(leaf);
+      swept_engines.push_back({std::move(name), std::move(a).value(), std::move(b).value()});
+    }
   }
   struct FclEngine {
     FclVolume volume;
@@ -121,6 +129,8 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
       double bv = 0;
       for (const Pose& p : set.poses) bv += static_cast<double>(distance(e.a, id, e.b, p).stats.bv_tests);
       r.bv_tests = bv / static_cast<double>(set.poses.size());
+      r.bytes_per_triangle = static_cast<double>(e.a.memory_bytes() + e.b.memory_bytes()) /
+                             static_cast<double>(e.a.triangles.size() + e.b.triangles.size());
       results.push_back(r);
     }
     for (const FclEngine& e : fcl_engines) {
@@ -129,6 +139,14 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
       r.distance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + e.a->distance(id, *e.b, p); });
       // FCL has no tolerance query: its nearest equivalent is a distance query and a comparison.
       r.tolerance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + (e.a->distance(id, *e.b, p) < tol); });
+      double bv = 0;
+      for (const Pose& p : set.poses) {
+        const FclDistanceStats st = e.a->distance_stats(id, *e.b, p);
+        bv += static_cast<double>(st.bv_tests);
+        if (st.distance != e.a->distance(id, *e.b, p))
+          throw std::runtime_error("FCL's counted distance query differs from fcl::distance");
+      }
+      r.bv_tests = bv / static_cast<double>(set.poses.size());
       results.push_back(r);
       for (const Pose& p : set.poses) {
         const double ours = distance(ref_a, id, ref_b, p).distance;
@@ -167,7 +185,8 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
                            {"collide_us", r.collide_us},
                            {"distance_us", r.distance_us},
                            {"tolerance_us", r.tolerance_us},
-                           {"bv_tests_per_distance", r.bv_tests >= 0 ? nlohmann::ordered_json(r.bv_tests) : nlohmann::ordered_json()}});
+                           {"bv_tests_per_distance", r.bv_tests >= 0 ? nlohmann::ordered_json(r.bv_tests) : nlohmann::ordered_json()},
+                           {"bytes_per_triangle", r.bytes_per_triangle >= 0 ? nlohmann::ordered_json(r.bytes_per_triangle) : nlohmann::ordered_json()}});
       }
       j["sets"].push_back({{"name", sets[s].name}, {"poses", sets[s].poses.size()}, {"results", results}});
     }
@@ -179,8 +198,8 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
   }
   out << "A: " << o.file_a << " (" << ta.size() << " triangles)\nB: " << o.file_b << " (" << tb.size()
             << " triangles)\nmodel size " << fmt_sci(size) << ", tolerance " << fmt_sci(tol) << ", " << o.poses
-            << " poses per set, seed " << o.seed << "\n\n";
-  Table table({"set", "engine", "collide us", "distance us", "tolerance us", "BV tests/distance",
+            << " poses per set, seed " << o.seed << ", split rule " << to_string(o.split) << "\n\n";
+  Table table({"set", "engine", "collide us", "distance us", "tolerance us", "BV tests/distance", "bytes/tri",
                "collide x vs fcl-obbrss", "distance x vs fcl-obbrss"});
   for (std::size_t s = 0; s < sets.size(); ++s) {
     const EngineResult* fcl = nullptr;
@@ -189,12 +208,15 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
     for (const EngineResult& r : all[s]) {
       table.add({sets[s].name, r.engine, fmt_fixed(r.collide_us, 2), fmt_fixed(r.distance_us, 2),
                  fmt_fixed(r.tolerance_us, 2), r.bv_tests >= 0 ? fmt_fixed(r.bv_tests, 1) : "n/a",
+                 r.bytes_per_triangle >= 0 ? fmt_fixed(r.bytes_per_triangle, 0) : "n/a",
                  fmt_fixed(fcl->collide_us / r.collide_us, 2), fmt_fixed(fcl->distance_us / r.distance_us, 2)});
     }
   }
   table.print(out);
   out << "\n(Times are the mean thread CPU time per query. FCL has no tolerance query: its column is\n"
-               " a distance query and a comparison.)\n"
+               " a distance query and a comparison. BV tests: swept counts every RSS pair test of the query,\n"
+               " its first-contact search included; FCL its traversal node's num_bv_tests, the same query run\n"
+               " as fcl::distance runs it.)\n"
             << "largest relative distance difference vs FCL: " << fmt_sci(max_rel_diff) << "\n"
             << "batch of " << batch.size() << " distance queries (swept-inertia): " << fmt_fixed(t1 * 1e3, 1)
             << " ms on 1 thread, " << fmt_fixed(t2 * 1e3, 1) << " ms on 2 threads, speedup "

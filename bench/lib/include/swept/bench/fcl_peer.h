@@ -17,6 +17,13 @@ enum class FclVolume { obbrss, rss };
 /// The engine name used in tables and JSON: "fcl-obbrss" or "fcl-rss".
 std::string_view fcl_engine_name(FclVolume v);
 
+/// One FCL distance query with FCL's own counters (its traversal node's statistics).
+struct FclDistanceStats {
+  double distance = 0.0;
+  long bv_tests = 0;    ///< bounding-volume pair tests (FCL's num_bv_tests)
+  long leaf_tests = 0;  ///< triangle pair tests (num_leaf_tests)
+};
+
 /// An FCL BVHModel of a triangle soup (built once, immutable afterwards).
 class FclMesh {
  public:
@@ -30,10 +37,14 @@ class FclMesh {
   /// fcl::distance with a default request and nearest points enabled (swept always computes
   /// them). Returns FCL's min_distance.
   double distance(const Pose& pose, const FclMesh& other, const Pose& other_pose) const;
+  /// The same query run through FCL's traversal node directly, as fcl::distance runs it, to
+  /// read its counters of bounding-volume and triangle pair tests (`other` has this volume type).
+  FclDistanceStats distance_stats(const Pose& pose, const FclMesh& other, const Pose& other_pose) const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  FclVolume volume_;
 };
 
 }  // namespace swept::bench
