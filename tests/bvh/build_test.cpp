@@ -164,19 +164,25 @@ TEST(BuildBvh, ParallelEqualsSerialNodeForNode) {
   auto tris = test::nasty_triangles(rng, 20000, 50.0);
   auto more = test::random_triangles(rng, 20000, 50.0, 2.0);
   tris.insert(tris.end(), more.begin(), more.end());
-  for (Fitter f : kFitters) {
-    auto serial = build_bvh(tris, {.fitter = f, .parallel = false});
-    Result<Bvh> parallel = Error{};
-    {
-      tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
-      parallel = build_bvh(tris, {.fitter = f, .parallel = true});
+  // Leaf size 1 fills every subtree's block of indices exactly; larger leaves leave its end
+  // unused and the build closes the gaps: the same tree either way, reachable, every node once.
+  for (const int leaf : {1, 3, 4}) {
+    for (Fitter f : kFitters) {
+      const std::string what = std::string(to_string(f)) + " leaf " + std::to_string(leaf);
+      auto serial = build_bvh(tris, {.fitter = f, .leaf_size = leaf, .parallel = false});
+      Result<Bvh> parallel = Error{};
+      {
+        tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+        parallel = build_bvh(tris, {.fitter = f, .leaf_size = leaf, .parallel = true});
+      }
+      ASSERT_TRUE(serial && parallel);
+      ASSERT_EQ(serial->nodes.size(), parallel->nodes.size()) << what;
+      EXPECT_EQ(std::memcmp(serial->nodes.data(), parallel->nodes.data(), serial->nodes.size() * sizeof(Node)), 0) << what;
+      EXPECT_EQ(serial->triangle_ids, parallel->triangle_ids) << what;
+      EXPECT_EQ(serial->depth, parallel->depth) << what;
+      expect_structure(*parallel, tris.size(), leaf);
+      if (leaf > 1) expect_containment(*parallel, what);
     }
-    ASSERT_TRUE(serial && parallel);
-    ASSERT_EQ(serial->nodes.size(), parallel->nodes.size());
-    EXPECT_EQ(std::memcmp(serial->nodes.data(), parallel->nodes.data(), serial->nodes.size() * sizeof(Node)), 0)
-        << to_string(f);
-    EXPECT_EQ(serial->triangle_ids, parallel->triangle_ids);
-    EXPECT_EQ(serial->depth, parallel->depth);
   }
 }
 
