@@ -38,9 +38,11 @@ using detail::PlanContext;
 
 // Expansions the grid's levels may spend without running out of nodes before the trees take
 // over. The axis-aligned narrow passages it is good at are solved within it (the box problems
-// and the hooks at level 0 in a few dozen expansions, where the trees take 0.7 s); larger
-// budgets only held the trees back (2000: 0.1–3 s more on the house, the cubicles, the spiral).
-constexpr std::size_t kGridBudget = 500;
+// and the hooks at level 0 in a few dozen expansions, where the trees take 0.7 s; the air-cleaner
+// within 150); larger budgets only hold the trees back (500 against 150: 5–20 % more search
+// time on the house, the cubicles, the bug trap, the twisty slot and the two larger scenes; 2000:
+// 0.1–3 s more), and 50 left the air-cleaner to the trees (2.9× slower). docs/bench-plan.md.
+constexpr std::size_t kGridBudget = 150;
 
 // Coordinates far beyond the scene lose the precision the distance bounds rely on (a query at
 // 1e100 visits every pair and takes seconds, so no time limit holds): the bounds, the start,
