@@ -1,7 +1,8 @@
 // Collide, distance and tolerance queries over two RSS trees (Larsen et al. 1999; PQP's
-// traversal scheme): B is placed in A's frame once per query, node pairs are visited depth
-// first from a fixed-capacity stack, the larger node of a pair is split, and for distance the
-// nearer child pair is visited first.
+// traversal scheme): B is placed in A's frame once per query and the larger node of a pair is
+// split. Collide and proximity visit node pairs depth first from a fixed-capacity stack; the
+// distance search takes the pending pair of smallest bound first for its first dives, then
+// goes on depth first, nearer child pair first (DistanceSearch::run).
 #include "swept/query/query.h"
 
 #include "traversal.h"
@@ -12,13 +13,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace swept {
 namespace {
 
 using detail::descend_a;
 using detail::node_pair;
-using detail::PairStack;
 using detail::Relative;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -146,18 +148,71 @@ struct DistanceSearch {
     }
   }
 
-  // Depth first, nearer child pair first; a popped pair is dropped when the answer has since
-  // dropped to its bound.
+  // The order of the node pairs. A pair is expanded into its two child pairs; the nearer one is
+  // taken next at once (a dive toward the leaves), the other waits. For the first kBestFirstDives
+  // dives the waiting pair of smallest bound starts the next dive (best first, a binary heap):
+  // in near contact this finds a close pair before the depth-first order would, and the answer
+  // then prunes everything else (measured on two CAD pairs: 20-31 % fewer node pairs and 27-41 %
+  // less time near contact, 9-23 % and 5-20 % far apart; docs/fitters.md "Traversal order").
+  // After that the waiting pairs are sorted, the smallest bound on top, and the search goes on
+  // depth first: a heap over a whole far-apart query costs more than the pairs it saves (best
+  // first throughout was 5-24 % slower than depth first far apart). Ties are broken by node
+  // indices, so the order, and with it the witness of a tie, is the same on every run.
+  // Tolerance queries (stop_at_first) want any pair below the threshold, not the nearest: depth
+  // first throughout. A popped pair is dropped when the answer has since dropped to its bound.
+  static constexpr int kBestFirstDives = 64;
+
   void run() {
     if (a.empty() || b.empty()) return;
     detail::PlacedRss root_b = detail::place(b.nodes[0].bv, rel);
     const double root = bound(0, 0, root_b);
     if (prune(root)) return;
-    PairStack stack(a, b);
-    stack.push(0, 0, root);
-    while (!stack.empty()) {
+    // The waiting pairs: a heap while best first, then a stack (its back on top). The buffer is
+    // the thread's, reused from query to query; taken out while in use, so a nested search on
+    // the same thread gets its own.
+    thread_local std::vector<detail::PairEntry> spare;
+    std::vector<detail::PairEntry> waiting = std::exchange(spare, {});
+    waiting.clear();
+    run(root, waiting);
+    spare = std::move(waiting);
+  }
+
+  void run(double root, std::vector<detail::PairEntry>& waiting) {
+    auto later = [](const detail::PairEntry& x, const detail::PairEntry& y) {
+      if (x.bound != y.bound) return x.bound > y.bound;
+      return x.a != y.a ? x.a > y.a : x.b > y.b;
+    };
+    int dives = stop_at_first ? kBestFirstDives : 0;
+    bool best_first = dives < kBestFirstDives;
+    bool diving = true;  // `next` holds the pair to expand
+    detail::PairEntry next{0, 0, root};
+    auto wait = [&](const detail::PairEntry& e) {
+      waiting.push_back(e);
+      if (best_first) std::push_heap(waiting.begin(), waiting.end(), later);
+    };
+    while (diving || !waiting.empty()) {
       if (stop_at_first && have_witness) return;
-      const detail::PairEntry e = stack.pop();
+      detail::PairEntry e = next;
+      if (!diving) {
+        if (best_first && ++dives > kBestFirstDives) {
+          best_first = false;
+          std::sort(waiting.begin(), waiting.end(), later);  // the smallest bound last: on top
+        }
+        if (best_first) {
+          std::pop_heap(waiting.begin(), waiting.end(), later);
+          e = waiting.back();
+          waiting.pop_back();
+          if (prune(e.bound)) {
+            // Every waiting pair's bound is at least this one's: all are dropped.
+            for (const detail::PairEntry& w : waiting) prune(w.bound);
+            return;
+          }
+        } else {
+          e = waiting.back();
+          waiting.pop_back();
+        }
+      }
+      diving = false;
       if (prune(e.bound)) continue;
       const Node& na = a.nodes[e.a];
       const Node& nb = b.nodes[e.b];
@@ -186,7 +241,10 @@ struct DistanceSearch {
         const std::int32_t ca = leaf0 ? a1 : a0, cb = leaf0 ? b1 : b0;
         detail::PlacedRss placed = detail::place(b.nodes[cb].bv, rel);
         const double d = bound(ca, cb, placed);
-        if (!prune(d)) stack.push(ca, cb, d);
+        if (!prune(d)) {
+          next = {ca, cb, d};
+          diving = true;
+        }
         continue;
       }
       double d0, d1;
@@ -200,14 +258,17 @@ struct DistanceSearch {
         d0 = bound(a0, b0, p0);
         d1 = bound(a1, b1, p1);
       }
-      // Nearer pair on top of the stack; ties keep the first child first (deterministic).
+      // The nearer pair next; ties keep the first child first (deterministic).
       if (d1 < d0) {
         std::swap(a0, a1);
         std::swap(b0, b1);
         std::swap(d0, d1);
       }
-      if (!prune(d1)) stack.push(a1, b1, d1);
-      if (!prune(d0)) stack.push(a0, b0, d0);
+      if (!prune(d1)) wait({a1, b1, d1});
+      if (!prune(d0)) {
+        next = {a0, b0, d0};
+        diving = true;
+      }
     }
   }
 };

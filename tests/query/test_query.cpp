@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <vector>
@@ -365,6 +366,92 @@ TEST(QueryConcurrency, ManyThreadsGiveTheSerialResults) {
   }
   for (auto& th : threads) th.join();
   for (int t = 0; t < 8; ++t) EXPECT_EQ(mismatches[t], 0) << "thread " << t;
+}
+
+/// A bumpy plate over [0, 10]²: an n × n grid of heights `noise`·uniform, two triangles a cell.
+std::vector<Triangle> bumpy_plate(Rng& rng, int n, double noise) {
+  std::vector<Vec3> v;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) v.emplace_back(10.0 * i / (n - 1), 10.0 * j / (n - 1), noise * rng.uniform());
+  std::vector<Triangle> out;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const Vec3 &p = v[i * n + j], &q = v[(i + 1) * n + j], &r = v[(i + 1) * n + j + 1], &s = v[i * n + j + 1];
+      out.push_back({p, q, r});
+      out.push_back({p, r, s});
+    }
+  return out;
+}
+
+// Long searches: two bumpy plates facing each other, where thousands of node pairs have bounds
+// near the answer. The distance search takes its first dives best first and then goes on depth
+// first; both phases must find the all-pairs answer, ties included, for every fitter.
+TEST_P(QueryOracle, LongSearchesMatchBruteForce) {
+  Rng rng(91);
+  const auto ta = bumpy_plate(rng, 22, 0.3);
+  const auto tb = bumpy_plate(rng, 20, 0.3);
+  const Bvh a = build(ta, GetParam());
+  const Bvh b = build(tb, GetParam());
+  // A dive tests at most two pairs per level of the two trees: past this many tests the search
+  // has made more dives than it takes best first (kBestFirstDives = 64 in query.cpp).
+  const std::uint64_t past_best_first = 2u * 64u * static_cast<std::uint64_t>(a.depth + b.depth);
+  std::uint64_t longest = 0;
+  for (int k = 0; k < 6; ++k) {
+    SCOPED_TRACE("pose " + std::to_string(k));
+    // B upside down above A, a little tilted, at gaps from contact to a plate's size.
+    const Mat3 flip = Eigen::AngleAxisd(std::numbers::pi, Vec3::UnitX()).toRotationMatrix();
+    const Mat3 tilt = Eigen::AngleAxisd(0.05 * rng.uniform(-1, 1), Vec3::UnitY()).toRotationMatrix();
+    const double gap = k < 2 ? 0.3 * rng.uniform() : (k < 4 ? 0.6 + rng.uniform() : 3.0 + 8.0 * rng.uniform());
+    const Pose pb{tilt * flip, Vec3(rng.uniform(-2, 2), 10.0 + rng.uniform(-2, 2), 0.3 + gap)};
+    const test::BruteDistance bd = test::brute_distance(ta, tb, Pose::identity(), pb);
+    const DistanceResult d = distance(a, Pose::identity(), b, pb);
+    ASSERT_TRUE(d.exact);
+    ASSERT_NEAR(d.distance, bd.distance, 1e-12 * bd.distance + 1e-300);
+    const double wtol = 1e-11 * 20.0;
+    EXPECT_NEAR((d.point_a - d.point_b).norm(), d.distance, wtol);
+    EXPECT_LE(point_triangle_closest(d.point_a, ta[d.triangle_a]).distance, wtol);
+    EXPECT_LE(point_triangle_closest(pb.apply_inverse(d.point_b), tb[d.triangle_b]).distance, wtol);
+    longest = std::max<std::uint64_t>(longest, d.stats.bv_tests);
+    // Warm starts and early exits on the same long searches.
+    EXPECT_EQ(distance(a, Pose::identity(), b, pb, {.upper_bound = bd.distance}).distance, d.distance);
+    EXPECT_EQ(distance(a, Pose::identity(), b, pb, {.hint = d.hint}).distance, d.distance);
+    const DistanceResult de = distance(a, Pose::identity(), b, pb, {.enough = 0.5 * bd.distance});
+    EXPECT_GE(de.distance, 0.5 * bd.distance);
+    EXPECT_LE(de.distance, bd.distance * (1 + 1e-12));
+  }
+  EXPECT_GT(longest, past_best_first) << "no pose reached the depth-first phase";
+}
+
+// The distance search reuses a per-thread buffer for its waiting pairs: a search started from
+// inside another on the same thread (here from a pair rule) must not disturb the outer one.
+TEST(QueryEdgeCases, NestedDistanceSearchesOnOneThread) {
+  Rng rng(5);
+  const auto ta = bumpy_plate(rng, 20, 0.3);
+  const auto tb = bumpy_plate(rng, 18, 0.3);
+  const Bvh a = build(ta, Fitter::inertia);
+  const Bvh b = build(tb, Fitter::inertia);
+  const Mat3 flip = Eigen::AngleAxisd(std::numbers::pi, Vec3::UnitX()).toRotationMatrix();
+  const Pose pb{flip, Vec3(0.5, 10.5, 1.0)};
+  const Pose inner_pose{flip, Vec3(-0.5, 9.5, 2.0)};
+  const DistanceResult inner_alone = distance(a, Pose::identity(), b, inner_pose);
+  int nested = 0;
+  bool inner_same = true;
+  const std::function<bool(std::uint32_t, std::uint32_t)> rule = [&](std::uint32_t i, std::uint32_t j) {
+    if ((i + j) % 97 == 0) {
+      ++nested;
+      inner_same = inner_same && distance(a, Pose::identity(), b, inner_pose).distance == inner_alone.distance;
+    }
+    return false;  // leaves every pair in
+  };
+  const DistanceResult plain = distance(a, Pose::identity(), b, pb);
+  const DistanceResult with_rule = distance(a, Pose::identity(), b, pb, {.exclude_if = &rule});
+  EXPECT_GT(nested, 0);
+  EXPECT_TRUE(inner_same);
+  EXPECT_EQ(with_rule.distance, plain.distance);
+  EXPECT_EQ(with_rule.triangle_a, plain.triangle_a);
+  EXPECT_EQ(with_rule.triangle_b, plain.triangle_b);
+  const double brute = test::brute_distance(ta, tb, Pose::identity(), pb).distance;
+  EXPECT_NEAR(plain.distance, brute, 1e-12 * brute);
 }
 
 TEST(QueryEdgeCases, SingleTriangleModelsAndIdenticalPoses) {
