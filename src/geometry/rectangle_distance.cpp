@@ -73,9 +73,9 @@ double gap_bound(const RectanglePair& pr, double stop_at, bool projected) {
   stop_at += slack;
   double gap = -kInf;
   if (projected) {
-    // Two rounds of alternating projection from B's center: P on A, Q on B. The direction
-    // Q − P converges to the closest-pair direction, and the gap along it is a valid bound
-    // anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`, no axis
+    // Two rounds (one when far apart) of alternating projection from B's center: P on A, Q on
+    // B. The direction Q − P converges to the closest-pair direction, and the gap along it is a
+    // valid bound anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`, no axis
     // can reach `stop_at` and the remaining axes are skipped.
     const Vec3 u = R.col(0), v = R.col(1);
     auto onto_a = [&](const Vec3& x) {
@@ -87,8 +87,15 @@ double gap_bound(const RectanglePair& pr, double stop_at, bool projected) {
     };
     Vec3 p = onto_a(t);
     Vec3 q = onto_b(p);
-    p = onto_a(q);
-    q = onto_b(p);
+    // Centers more than twice the rectangles' half-lengths apart: the first round's direction
+    // is already close to the closest-pair direction, and the second round costs more than the
+    // bound gains (far-apart CAD pairs: 5-10 % less distance time with one round there; near
+    // contact the second round pays).
+    const double span = a0 + a1 + b0 + b1;
+    if (!(t.squaredNorm() > 4.0 * span * span)) {
+      p = onto_a(q);
+      q = onto_b(p);
+    }
     const Vec3 n = q - p;
     const double nn = n.squaredNorm();
     if (nn > 0.0) {
