@@ -1,15 +1,24 @@
 // swept: can this part be taken out, and how?
 #include "commands.h"
+#include "swept/io/cad_reader.h"
 
 #include <exception>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv) {
   CLI::App app{
       "swept: collision and distance queries on rigid triangle meshes with RSS trees,\n"
       "and certified, deterministic 6-DOF assembly/disassembly path planning."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "swept 0.1.0");
+  // The version, and which CAD reader module (STEP, IGES, OCCT .brep) this swept loads: an
+  // install or a moved prefix can be checked with it (swept/io/cad_reader.h).
+  app.set_version_flag("--version", [] {
+    const swept::CadReaderStatus cad = swept::cad_reader_status();
+    std::string text = "swept 0.1.0\nCAD reader (STEP, IGES, OCCT .brep): ";
+    if (!cad.path.empty()) return text + cad.path.string();
+    return text + "none: " + cad.error;
+  });
   swept::cli::add_bvh_command(app);
   swept::cli::add_plan_command(app);
   swept::cli::add_check_command(app);

@@ -5,6 +5,7 @@
 #include "swept/io/file_write.h"
 
 #include "import_detail.h"
+#include "cad_module.h"
 #include "isolate.h"
 
 #include <algorithm>
@@ -85,18 +86,6 @@ TriangleSoup ImportedModel::merged() const {
   return all;
 }
 
-namespace io_detail {
-
-Result<std::string> read_file_bytes(const std::filesystem::path& file, const std::string& display) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return file_error(display, "cannot open file for reading");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return file_error(display, "read error");
-  return bytes;
-}
-
-}  // namespace io_detail
-
 namespace {
 
 enum class Reader { stl, assimp, cad };
@@ -165,6 +154,10 @@ Result<bool> read_isolated(io_detail::ReadContext& ctx, Reader reader, std::vect
     return reader == Reader::assimp ? io_detail::read_with_assimp(ctx, out) : io_detail::read_cad(ctx, out);
   };
   if (!ctx.options->isolate_readers) return read_here(parts);
+  // The CAD reader's module is loaded here, before the fork: loading a library in a child forked
+  // from a threaded process is not safe, and the next CAD file's child inherits it. Without it
+  // read_cad says why, with no child.
+  if (reader == Reader::cad && io_detail::cad_module().entry == nullptr) return io_detail::read_cad(ctx, parts);
   const char* name = reader == Reader::assimp ? "assimp" : "OpenCASCADE";
   auto bytes = io_detail::run_isolated(ctx.display, name, ctx.options->reader_timeout, [&]() -> Result<std::string> {
     ctx.single_threaded = true;  // no oneTBB after fork

@@ -12,6 +12,15 @@ cmake --build "$tmp/consumer" >/dev/null
 "$tmp/consumer/consumer"
 PKG_CONFIG_PATH="$tmp/prefix/lib/pkgconfig" pkg-config --cflags --libs swept | grep -q -- "-lswept_query"
 test -x "$tmp/prefix/bin/swept"
+# The CAD reader is a module loaded on first use: the installed swept finds the installed module
+# (not the build tree's) from the moved prefix, and reads STEP with it.
+"$tmp/prefix/bin/swept" --version | grep -qxF "CAD reader (STEP, IGES, OCCT .brep): $tmp/prefix/lib/swept/libswept_cad.so"
+"$tmp/prefix/bin/swept" mesh-stats "$src/tests/data/io/box_mm.step" --json | grep -q '"triangles": 12'
+# Programs that never read CAD do not load OpenCASCADE at start-up.
+if ldd "$tmp/prefix/bin/swept" | grep -q "libTKXDESTEP"; then
+  echo "install: the swept binary links OpenCASCADE's STEP reader at start-up" >&2
+  exit 1
+fi
 # The Python module, when it was built, imports from the prefix's site directory.
 for site in "$tmp"/prefix/lib/python3*/dist-packages; do
   [ -d "$site/swept" ] || continue

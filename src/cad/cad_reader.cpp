@@ -1,9 +1,11 @@
-// STEP, IGES and OCCT .brep through OpenCASCADE. STEP and IGES go through XCAF so that assembly
+// STEP, IGES and OCCT .brep through OpenCASCADE, built as the module libswept_cad.so that
+// swept_io loads on first use (src/io/cad_module.h). STEP and IGES go through XCAF so that assembly
 // instances come out with their placements and part names; every unique part shape is
 // tessellated once by BRepMesh (in parallel over faces, which is deterministic because each face
 // is meshed independently), then each instance's faces are transformed into the common frame.
 #include "cad_budget.h"
 #include "format_checks.h"
+#include "cad_module.h"
 #include "import_detail.h"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -225,7 +227,7 @@ void brep_instances(const TopoDS_Shape& shape, const std::string& stem, std::vec
 
 }  // namespace
 
-Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
+Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
   const std::string ext = lower(ctx.file.extension().string());
   const ImportOptions& opt = *ctx.options;
   const std::string stem = ctx.file.stem().string();
@@ -352,3 +354,12 @@ Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
 }
 
 }  // namespace swept::io_detail
+
+// The module's two entry points (the only symbols it exports; src/io/cad_module.cpp).
+extern "C" __attribute__((visibility("default"))) const char* swept_cad_abi() { return swept::io_detail::cad_module_abi(); }
+
+extern "C" __attribute__((visibility("default"))) void swept_cad_read(const swept::io_detail::ReadContext* ctx,
+                                                                       std::vector<swept::TriangleSoup>* parts,
+                                                                       swept::Result<bool>* out) {
+  *out = swept::io_detail::read_cad_occt(*ctx, *parts);
+}

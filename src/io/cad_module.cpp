@@ -1,0 +1,136 @@
+// The STEP / IGES / OCCT .brep reader lives in a module of its own, libswept_cad.so (src/cad/),
+// loaded the first time a CAD file is read: OpenCASCADE's data-exchange libraries (XDE and the
+// visualisation libraries they pull in) took ~60 % of every swept command's start-up, CAD file
+// or not. This file finds and loads that module (cad_module.h).
+#include "cad_module.h"
+
+#include "swept/io/cad_reader.h"
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <mutex>
+#include <sstream>
+#include <string_view>
+
+#ifndef SWEPT_CAD_MODULE_BUILD_PATH
+#define SWEPT_CAD_MODULE_BUILD_PATH ""
+#endif
+#ifndef SWEPT_CAD_MODULE_INSTALL_PATH
+#define SWEPT_CAD_MODULE_INSTALL_PATH ""
+#endif
+#ifndef SWEPT_CAD_MODULE_FROM_BINDIR
+#define SWEPT_CAD_MODULE_FROM_BINDIR ""
+#endif
+#ifndef SWEPT_BUILD_DIR
+#define SWEPT_BUILD_DIR ""
+#endif
+
+namespace swept::io_detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+using EntryFn = void (*)(const ReadContext*, std::vector<TriangleSoup>*, Result<bool>*);
+using AbiFn = const char* (*)();
+
+/// The directory of the binary that holds this code: the executable, or a shared object such
+/// as the Python module.
+fs::path own_directory() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&own_directory), &info) == 0 || info.dli_fname == nullptr) return {};
+  std::error_code ec;
+  fs::path self = fs::canonical(fs::path(info.dli_fname), ec);
+  if (ec) self = fs::path(info.dli_fname);
+  return self.parent_path();
+}
+
+bool inside(const fs::path& dir, const std::string& root) {
+  if (root.empty() || dir.empty()) return false;
+  std::error_code ec;
+  const fs::path r = fs::weakly_canonical(fs::path(root), ec);
+  if (ec) return false;
+  const std::string d = dir.string(), rs = r.string();
+  return d.size() >= rs.size() && d.compare(0, rs.size(), rs) == 0 && (d.size() == rs.size() || d[rs.size()] == '/');
+}
+
+CadModule load() {
+  CadModule m;
+  m.candidates = cad_module_candidates();
+  std::ostringstream tried;
+  for (const fs::path& p : m.candidates) {
+    std::error_code ec;
+    if (!fs::is_regular_file(p, ec)) {
+      tried << (tried.tellp() > 0 ? "; " : "") << p.string() << " (not there)";
+      continue;
+    }
+    void* handle = dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr) {
+      const char* why = dlerror();
+      tried << (tried.tellp() > 0 ? "; " : "") << p.string() << " (" << (why ? why : "dlopen failed") << ")";
+      continue;
+    }
+    auto abi = reinterpret_cast<AbiFn>(dlsym(handle, "swept_cad_abi"));
+    auto entry = reinterpret_cast<EntryFn>(dlsym(handle, "swept_cad_read"));
+    if (abi == nullptr || entry == nullptr || std::string_view(abi()) != cad_module_abi()) {
+      tried << (tried.tellp() > 0 ? "; " : "") << p.string() << " (built for another version of swept: "
+            << (abi ? abi() : "no version") << ", this one is " << cad_module_abi() << ")";
+      dlclose(handle);
+      continue;
+    }
+    m.path = p;
+    m.entry = reinterpret_cast<void*>(entry);
+    return m;
+  }
+  m.error = "swept's OpenCASCADE reader libswept_cad.so could not be loaded; tried " + tried.str() +
+            "; set SWEPT_CAD_MODULE to its path, or reinstall swept";
+  return m;
+}
+
+}  // namespace
+
+std::vector<fs::path> cad_module_candidates() {
+  std::vector<fs::path> out;
+  if (const char* env = std::getenv("SWEPT_CAD_MODULE"); env != nullptr && *env != '\0') {
+    out.emplace_back(env);
+    return out;  // an explicit choice: nothing else
+  }
+  const fs::path dir = own_directory();
+  const std::string build_path = SWEPT_CAD_MODULE_BUILD_PATH, install_path = SWEPT_CAD_MODULE_INSTALL_PATH;
+  // A binary in its build tree loads that tree's module first, whatever is installed.
+  if (inside(dir, SWEPT_BUILD_DIR) && !build_path.empty()) out.emplace_back(build_path);
+  if (!dir.empty()) {
+    out.push_back(dir / "libswept_cad.so");
+    // An installed binary, wherever its prefix was moved: <prefix>/bin → <prefix>/<libdir>/swept.
+    if (const std::string rel = SWEPT_CAD_MODULE_FROM_BINDIR; !rel.empty()) out.push_back((dir / rel).lexically_normal());
+  }
+  if (!install_path.empty()) out.emplace_back(install_path);
+  if (!build_path.empty() && !inside(dir, SWEPT_BUILD_DIR)) out.emplace_back(build_path);
+  return out;
+}
+
+const CadModule& cad_module() {
+  static std::once_flag once;
+  static CadModule module;
+  std::call_once(once, [] { module = load(); });
+  return module;
+}
+
+Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
+  const CadModule& m = cad_module();
+  if (m.entry == nullptr) return file_error(ctx.display, "cannot read STEP, IGES or OCCT .brep files: " + m.error);
+  Result<bool> out = true;
+  reinterpret_cast<EntryFn>(m.entry)(&ctx, &parts, &out);
+  return out;
+}
+
+}  // namespace swept::io_detail
+
+namespace swept {
+
+CadReaderStatus cad_reader_status() {
+  const io_detail::CadModule& m = io_detail::cad_module();
+  return {m.path, m.error, m.candidates};
+}
+
+}  // namespace swept
