@@ -8,6 +8,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 #include <sstream>
@@ -34,15 +35,25 @@ namespace fs = std::filesystem;
 using EntryFn = void (*)(const ReadContext*, std::vector<TriangleSoup>*, Result<bool>*);
 using AbiFn = const char* (*)();
 
-/// The directory of the binary that holds this code: the executable, or a shared object such
-/// as the Python module.
-fs::path own_directory() {
+/// The folders of the binaries that hold this code: the shared object (such as the Python
+/// module) or the executable that swept_io is linked into, and the running executable. (For the
+/// executable dladdr answers argv[0], which is a bare name when the program was found on PATH;
+/// /proc/self/exe is its real path.)
+std::vector<fs::path> own_directories() {
+  std::vector<fs::path> out;
+  auto add = [&out](const fs::path& file) {
+    std::error_code ec;
+    if (!file.is_absolute() && !file.has_parent_path()) return;  // a bare name: not a location
+    const fs::path real = fs::canonical(file, ec);
+    if (ec) return;
+    const fs::path dir = real.parent_path();
+    if (std::find(out.begin(), out.end(), dir) == out.end()) out.push_back(dir);
+  };
   Dl_info info{};
-  if (dladdr(reinterpret_cast<const void*>(&own_directory), &info) == 0 || info.dli_fname == nullptr) return {};
-  std::error_code ec;
-  fs::path self = fs::canonical(fs::path(info.dli_fname), ec);
-  if (ec) self = fs::path(info.dli_fname);
-  return self.parent_path();
+  if (dladdr(reinterpret_cast<const void*>(&own_directories), &info) != 0 && info.dli_fname != nullptr)
+    add(fs::path(info.dli_fname));
+  add(fs::path("/proc/self/exe"));
+  return out;
 }
 
 bool inside(const fs::path& dir, const std::string& root) {
@@ -95,17 +106,19 @@ std::vector<fs::path> cad_module_candidates() {
     out.emplace_back(env);
     return out;  // an explicit choice: nothing else
   }
-  const fs::path dir = own_directory();
+  const std::vector<fs::path> dirs = own_directories();
   const std::string build_path = SWEPT_CAD_MODULE_BUILD_PATH, install_path = SWEPT_CAD_MODULE_INSTALL_PATH;
+  const bool in_build_tree =
+      std::any_of(dirs.begin(), dirs.end(), [](const fs::path& d) { return inside(d, SWEPT_BUILD_DIR); });
   // A binary in its build tree loads that tree's module first, whatever is installed.
-  if (inside(dir, SWEPT_BUILD_DIR) && !build_path.empty()) out.emplace_back(build_path);
-  if (!dir.empty()) {
+  if (in_build_tree && !build_path.empty()) out.emplace_back(build_path);
+  for (const fs::path& dir : dirs) {
     out.push_back(dir / "libswept_cad.so");
     // An installed binary, wherever its prefix was moved: <prefix>/bin → <prefix>/<libdir>/swept.
     if (const std::string rel = SWEPT_CAD_MODULE_FROM_BINDIR; !rel.empty()) out.push_back((dir / rel).lexically_normal());
   }
   if (!install_path.empty()) out.emplace_back(install_path);
-  if (!build_path.empty() && !inside(dir, SWEPT_BUILD_DIR)) out.emplace_back(build_path);
+  if (!build_path.empty() && !in_build_tree) out.emplace_back(build_path);
   return out;
 }
 

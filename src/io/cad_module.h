@@ -1,9 +1,6 @@
 #pragma once
 // Internal to swept_io: the CAD reader module (libswept_cad.so, src/cad/), loaded on first use by
-// read_cad() (import_detail.h). Searched, in order: $SWEPT_CAD_MODULE alone when set; else the
-// build tree's module for a binary inside its build tree; next to the binary holding swept_io;
-// <binary>/../<libdir>/swept (an installed swept, wherever its prefix was moved); the configured
-// install path; the build tree's.
+// read_cad() (import_detail.h), searched in the order that swept/io/cad_reader.h documents.
 #include "import_detail.h"
 
 #include <filesystem>

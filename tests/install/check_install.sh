@@ -16,6 +16,9 @@ test -x "$tmp/prefix/bin/swept"
 # (not the build tree's) from the moved prefix, and reads STEP with it.
 "$tmp/prefix/bin/swept" --version | grep -qxF "CAD reader (STEP, IGES, OCCT .brep): $tmp/prefix/lib/swept/libswept_cad.so"
 "$tmp/prefix/bin/swept" mesh-stats "$src/tests/data/io/box_mm.step" --json | grep -q '"triangles": 12'
+# ... also when it is run by name from PATH (then argv[0] is no location), from another folder.
+(cd "$tmp" && PATH="$tmp/prefix/bin:$PATH" swept --version) |
+  grep -qxF "CAD reader (STEP, IGES, OCCT .brep): $tmp/prefix/lib/swept/libswept_cad.so"
 # Programs that never read CAD do not load OpenCASCADE at start-up.
 if ldd "$tmp/prefix/bin/swept" | grep -q "libTKXDESTEP"; then
   echo "install: the swept binary links OpenCASCADE's STEP reader at start-up" >&2
