@@ -1,7 +1,7 @@
 #pragma once
-// Internal to swept_io: how many triangles BRepMesh will make of a face, estimated before it runs
-// (the CAD reader refuses a tessellation over ImportOptions::max_triangles), and the words of
-// that refusal.
+// Internal to the CAD reader module (src/cad/): how many triangles BRepMesh will make of a face,
+// estimated before it runs (the CAD reader refuses a tessellation over
+// ImportOptions::max_triangles), and the words of that refusal.
 #include "swept/io/mesh_io.h"
 
 #include <TopoDS_Face.hxx>
