@@ -75,8 +75,8 @@ double gap_bound(const RectanglePair& pr, double stop_at, bool projected) {
   if (projected) {
     // Two rounds (one when far apart) of alternating projection from B's center: P on A, Q on
     // B. The direction Q − P converges to the closest-pair direction, and the gap along it is a
-    // valid bound anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`, no axis
-    // can reach `stop_at` and the remaining axes are skipped.
+    // valid bound anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`,
+    // no axis can reach `stop_at` and the remaining axes are skipped.
     const Vec3 u = R.col(0), v = R.col(1);
     auto onto_a = [&](const Vec3& x) {
       return Vec3(std::clamp(x.x(), -a0, a0), std::clamp(x.y(), -a1, a1), 0.0);

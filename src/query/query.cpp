@@ -202,11 +202,9 @@ struct DistanceSearch {
           std::pop_heap(waiting.begin(), waiting.end(), later);
           e = waiting.back();
           waiting.pop_back();
-          if (prune(e.bound)) {
-            // Every waiting pair's bound is at least this one's: all are dropped.
-            for (const detail::PairEntry& w : waiting) prune(w.bound);
-            return;
-          }
+          // Every waiting pair's bound is at least this one's: all are dropped with it (and the
+          // smallest bound dropped for `enough`, if any, is this one).
+          if (prune(e.bound)) return;
         } else {
           e = waiting.back();
           waiting.pop_back();

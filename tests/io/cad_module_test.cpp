@@ -19,8 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
-
 TEST(CadModule, VersionNamesTheModuleInUse) {
   const CliRun r = run_cli("--version", /*with_stderr=*/false);
   ASSERT_EQ(r.code, 0) << r.out;

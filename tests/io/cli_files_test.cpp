@@ -17,8 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
-
 TEST(CliFiles, MissingInputIsExitCodeOneWithOneLineNamingIt) {
   const auto dir = scratch_dir();
   const std::string none = (dir / "none.stl").string();

@@ -1,5 +1,6 @@
 #pragma once
 // Running the built `swept` command line from tests (SWEPT_CLI is its path).
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <string>
@@ -24,6 +25,11 @@ inline CliRun run_cli(const std::string& args, bool with_stderr = true) {
   const int status = ::pclose(pipe);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+/// Lines in a command's output (its newlines).
+inline std::size_t lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
 }  // namespace swept::test
