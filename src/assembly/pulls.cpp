@@ -97,8 +97,8 @@ double box_gap(const Aabb& a, const Aabb& b) {
 
 bool nodes_mate(const Body& obstacle, std::int32_t ia, const Body& moving, std::int32_t ib, const Vec3& d,
                 double length, double tolerance) {
-  const Rss& ra = obstacle.tree.nodes[ia].bv;
-  const Rss& rb = moving.tree.nodes[ib].bv;
+  const Rss ra = obstacle.tree.bv(static_cast<std::size_t>(ia));
+  const Rss rb = moving.tree.bv(static_cast<std::size_t>(ib));
   auto reach = [](const Rss& r) { return r.half_length[0] + r.half_length[1] + r.radius; };
   // Any two points of the pair are at most this far apart; the same bound, 1e-9 of it, covers rounding.
   const double span = (ra.center - rb.center).norm() + reach(ra) + reach(rb);

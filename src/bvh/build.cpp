@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <string>
@@ -21,7 +22,7 @@ namespace swept {
 
 std::size_t Bvh::memory_bytes() const {
   // What the arrays hold, not only what they use (a build reserves for 2n − 1 nodes).
-  return nodes.capacity() * sizeof(Node) + triangles.capacity() * sizeof(Triangle) +
+  return nodes.capacity() * sizeof(Node) + triangles.memory_bytes() +
          triangle_ids.capacity() * sizeof(std::uint32_t) + sizeof(Bvh);
 }
 
@@ -30,12 +31,66 @@ BvhStats stats(const Bvh& bvh) {
   s.triangles = bvh.triangles.size();
   s.nodes = bvh.nodes.size();
   s.depth = bvh.depth;
-  for (const Node& n : bvh.nodes) {
-    s.total_surface_area += surface_area(n.bv);
-    s.total_volume += volume(n.bv);
+  for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+    const Rss v = bvh.bv(i);
+    s.total_surface_area += surface_area(v);
+    s.total_volume += volume(v);
   }
   s.bytes = bvh.memory_bytes();
   return s;
+}
+
+Aabb bounds(const IndexedTriangles& triangles) {
+  Aabb box;
+  for (const Vec3& v : triangles.vertices) box.extend(v);
+  return box;
+}
+
+std::vector<Triangle> IndexedTriangles::to_soup() const {
+  std::vector<Triangle> out(size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = (*this)[i];
+  return out;
+}
+
+namespace {
+
+// x rounded to a float, the rounding kept: GCC 12's SLP vectorizer (-O2 and up) drops a
+// double → float → double round trip of Eigen vector components (found here: a center stored as
+// floats decoded back bit for bit equal to the unrounded one, so no error was measured and the
+// stored RSS missed vertices). A volatile float is a value the compiler cannot see through.
+float to_float(double x) {
+  volatile float f = static_cast<float>(x);
+  return f;
+}
+
+// The float nearest to x that is not below it (x finite, |x| below FLT_MAX).
+float round_up(double x) {
+  float f = to_float(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+}  // namespace
+
+void encode_rss(const Rss& rss, const Vec3& origin, Node& node) {
+  // The axes as a quaternion rounded to floats, and the center relative to `origin` rounded to
+  // floats. The stored RSS uses what they decode to (decode_rss, shared with every query).
+  const Eigen::Quaterniond q(rss.axes);
+  Node out;
+  out.rotation = {to_float(q.w()), to_float(q.x()), to_float(q.y()), to_float(q.z())};
+  const Vec3 local = rss.center - origin;
+  out.center = {to_float(local.x()), to_float(local.y()), to_float(local.z())};
+  const Rss stored = decode_rss(out, origin);
+  // A point c + s·e1 + t·e2 + u of the RSS (|s| ≤ a, |t| ≤ b, ‖u‖ ≤ r) is within
+  // ‖δc‖ + a‖δ1‖ + b‖δ2‖ + r of the stored rectangle's point c' + s·e1' + t·e2'.
+  const double a = rss.half_length[0], b = rss.half_length[1];
+  const double grow = (stored.center - rss.center).norm() + a * (stored.axes.col(0) - rss.axes.col(0)).norm() +
+                      b * (stored.axes.col(1) - rss.axes.col(1)).norm();
+  // The relative slack covers the rounding of the sums above (a few units in the last place).
+  node.rotation = out.rotation;
+  node.center = out.center;
+  node.half_length = {round_up(a), round_up(b)};
+  node.radius = round_up((rss.radius + grow) * (1.0 + 1e-12));
 }
 
 namespace {
@@ -91,12 +146,14 @@ struct Scratch {
   std::vector<StackItem> stack;  // build_subtree's walk
 };
 
-// Completes a processed node: its centre to the model frame, then either its leaf range or its
+// Completes a processed node: its RSS (`rss`, in the builder's frame) to the model frame and
+// stored, then either its leaf range or its
 // two children at indices `next`, `next + 1` (taken from `next`), returned as pending work.
 // Returns false for a leaf.
-bool link_node(Node& node, const Pending& p, const Outcome& o, const Vec3& offset, std::size_t& next,
+bool link_node(Node& node, const Pending& p, const Outcome& o, Rss rss, const Vec3& offset, std::size_t& next,
                Pending children[2]) {
-  node.bv.center += offset;
+  rss.center += offset;
+  encode_rss(rss, offset, node);
   if (o.leaf) {
     node.first = static_cast<std::int32_t>(p.begin);
     node.count = static_cast<std::int32_t>(p.end - p.begin);
@@ -146,7 +203,9 @@ struct Builder {
       result.subtree_depth = std::max(result.subtree_depth, it.depth);
       Node& node = nodes[static_cast<std::size_t>(it.p.node)];
       Pending children[2];
-      if (!link_node(node, it.p, process(it.p, node.bv, s), offset, next, children)) continue;
+      Rss rss;
+      const Outcome o = process(it.p, rss, s);
+      if (!link_node(node, it.p, o, rss, offset, next, children)) continue;
       stack.push_back({children[1], it.depth + 1});
       stack.push_back({children[0], it.depth + 1});  // the left child first
     }
@@ -286,6 +345,54 @@ struct Builder {
 
 }  // namespace
 
+namespace {
+
+constexpr double kMaxCoordinate = 1e30;
+
+// The triangles `ids` (in that order) as indices into shared vertices: a vertex is shared when
+// its coordinates are equal bit for bit, so every triangle reads back exactly. Vertices are
+// numbered in order of first use, so the vertices of neighbouring leaves lie close in memory.
+// An open-addressing table of vertex indices, keyed by a hash of the coordinates' bits.
+void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>& ids, IndexedTriangles& out) {
+  const std::size_t n = ids.size();
+  out.vertices.clear();
+  out.corners.clear();
+  detail::reserve_huge(out.corners, n);
+  out.corners.resize(n);
+  std::size_t slots = 64;
+  while (slots < 6 * n) slots *= 2;  // at most 3n vertices: the table stays at most half full
+  constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> table(slots, kEmpty);
+  std::vector<Vec3> vertices;
+  auto index_of = [&](const Vec3& v) {
+    std::uint64_t k[3];
+    std::memcpy(k, v.data(), sizeof(k));
+    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ULL;
+    h = (h ^ (h >> 29) ^ k[1]) * 0xBF58476D1CE4E5B9ULL;
+    h = (h ^ (h >> 32) ^ k[2]) * 0x94D049BB133111EBULL;
+    h ^= h >> 31;
+    for (std::size_t slot = h & (slots - 1);; slot = (slot + 1) & (slots - 1)) {
+      const std::uint32_t idx = table[slot];
+      if (idx == kEmpty) {
+        table[slot] = static_cast<std::uint32_t>(vertices.size());
+        vertices.push_back(v);
+        return table[slot];
+      }
+      if (std::memcmp(vertices[idx].data(), v.data(), sizeof(k)) == 0) return idx;
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Triangle& t = triangles[ids[i]];
+    out.corners[i] = {index_of(t.p), index_of(t.q), index_of(t.r)};
+  }
+  std::vector<std::uint32_t>().swap(table);
+  // Exactly as many as used (the working array grew by doubling).
+  out.vertices.reserve(vertices.size());
+  out.vertices.assign(vertices.begin(), vertices.end());
+}
+
+}  // namespace
+
 Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& config) {
   if (triangles.empty()) return Error{"cannot build a tree of an empty mesh (0 triangles)"};
   if (triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 2))
@@ -298,6 +405,9 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     const Triangle& t = triangles[i];
     if (!(t.p.allFinite() && t.q.allFinite() && t.r.allFinite()))
       return Error{"triangle " + std::to_string(i) + " has a NaN or infinite coordinate"};
+    // Nodes are stored in single precision (Node): lengths up to 2e30 stay far from its limit.
+    if (std::max({t.p.cwiseAbs().maxCoeff(), t.q.cwiseAbs().maxCoeff(), t.r.cwiseAbs().maxCoeff()}) > kMaxCoordinate)
+      return Error{"triangle " + std::to_string(i) + " has a coordinate beyond ±1e30, which trees do not support"};
     box.extend(t.p);
     box.extend(t.q);
     box.extend(t.r);
@@ -355,6 +465,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
 
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
   std::vector<Outcome> outcomes;
+  std::vector<Rss> level_rss;  // the level's RSSs, in the builder's frame, until linked
   std::vector<Pending> next;
   std::vector<std::size_t> subtree_base;  // 0: not a subtree root (index 0 is the tree's root)
   int max_depth = 0;
@@ -372,13 +483,14 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     }
     bvh.nodes.resize(used);
     outcomes.assign(level.size(), Outcome{});
+    level_rss.resize(level.size());
     auto run = [&](const tbb::blocked_range<std::size_t>& range) {
       Scratch& s = builder.scratch.local();
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (subtree_base[i] != 0) {
           outcomes[i] = builder.build_subtree(level[i], subtree_base[i], bvh.nodes, offset, s);
         } else {
-          outcomes[i] = builder.process(level[i], bvh.nodes[static_cast<std::size_t>(level[i].node)].bv, s);
+          outcomes[i] = builder.process(level[i], level_rss[i], s);
         }
       }
     };
@@ -397,7 +509,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
         continue;
       }
       Pending children[2];
-      if (link_node(bvh.nodes[static_cast<std::size_t>(p.node)], p, o, offset, used, children))
+      if (link_node(bvh.nodes[static_cast<std::size_t>(p.node)], p, o, level_rss[i], offset, used, children))
         next.insert(next.end(), children, children + 2);
     }
     std::swap(level, next);
@@ -405,13 +517,10 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   bvh.depth = std::max(bvh.depth, max_depth);
   if (bvh.nodes.capacity() > used + used / 4) bvh.nodes.shrink_to_fit();  // large leaves
 
-  detail::reserve_huge(bvh.triangles, n);
-  bvh.triangles.resize(n);
+  bvh.origin = offset;
   bvh.triangle_ids.resize(n);
-  for_each_index([&](std::size_t i) {
-    bvh.triangle_ids[i] = order[ids[i]];
-    bvh.triangles[i] = triangles[bvh.triangle_ids[i]];
-  });
+  for_each_index([&](std::size_t i) { bvh.triangle_ids[i] = order[ids[i]]; });
+  weld(triangles, bvh.triangle_ids, bvh.triangles);
   return bvh;
 }
 

@@ -38,12 +38,10 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
   CollideResult out;
   if (a.empty() || b.empty()) return out;
   const double touch = 1e-12 * detail::coordinate_bound(a, b, rel);
-  auto overlapping = [&](std::int32_t ia, std::int32_t ib) {
+  auto overlapping = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
-    const Rss& na = a.nodes[ia].bv;
-    const Rss& nb = b.nodes[ib].bv;
-    const double limit = na.radius + nb.radius + touch;
-    return !(rectangle_gap(node_pair(na, nb, rel), limit) > limit);
+    const double limit = na.radius + pb.rss.radius + touch;
+    return !(rectangle_gap(node_pair(na, pb.rss, pb), limit) > limit);
   };
   auto leaves = [&](const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
@@ -62,7 +60,7 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
     }
     return true;
   };
-  detail::for_each_leaf_pair(a, b, overlapping, leaves);
+  detail::for_each_leaf_pair(a, b, rel, overlapping, leaves);
   sort_pairs(out.contacts);
   return out;
 }
@@ -127,10 +125,9 @@ struct DistanceSearch {
   }
   /// Lower bound for node ia of A against node ib of B (already placed in A's frame); the
   /// bound computation stops as soon as it reaches the prune level.
-  double bound(std::int32_t ia, std::int32_t ib, detail::PlacedRss& placed_b) {
+  double bound(const Rss& na, detail::PlacedRss& placed_b) {
     ++stats.bv_tests;
-    const Rss& na = a.nodes[ia].bv;
-    const Rss& nb = b.nodes[ib].bv;
+    const Rss& nb = placed_b.rss;
     const double level = prune_level();
     const double radii = na.radius + nb.radius;
     return rectangle_lower_bound(node_pair(na, nb, placed_b), level + radii) - radii;
@@ -164,8 +161,8 @@ struct DistanceSearch {
 
   void run() {
     if (a.empty() || b.empty()) return;
-    detail::PlacedRss root_b = detail::place(b.nodes[0].bv, rel);
-    const double root = bound(0, 0, root_b);
+    detail::PlacedRss root_b = detail::place(b, 0, rel);
+    const double root = bound(a.bv(0), root_b);
     if (prune(root)) return;
     // The waiting pairs: a heap while best first, then a stack (its back on top). The buffer is
     // the thread's, reused from query to query; taken out while in use, so a nested search on
@@ -237,8 +234,8 @@ struct DistanceSearch {
       if (leaf0 && leaf1) continue;
       if (leaf0 || leaf1) {
         const std::int32_t ca = leaf0 ? a1 : a0, cb = leaf0 ? b1 : b0;
-        detail::PlacedRss placed = detail::place(b.nodes[cb].bv, rel);
-        const double d = bound(ca, cb, placed);
+        detail::PlacedRss placed = detail::place(b, cb, rel);
+        const double d = bound(a.bv(static_cast<std::size_t>(ca)), placed);
         if (!prune(d)) {
           next = {ca, cb, d};
           diving = true;
@@ -247,14 +244,15 @@ struct DistanceSearch {
       }
       double d0, d1;
       if (split_a) {
-        detail::PlacedRss placed = detail::place(nb.bv, rel);  // shared by both tests
-        d0 = bound(a0, b0, placed);
-        d1 = bound(a1, b1, placed);
+        detail::PlacedRss placed = detail::place(b, e.b, rel);  // shared by both tests
+        d0 = bound(a.bv(static_cast<std::size_t>(a0)), placed);
+        d1 = bound(a.bv(static_cast<std::size_t>(a1)), placed);
       } else {
-        detail::PlacedRss p0 = detail::place(b.nodes[b0].bv, rel);
-        detail::PlacedRss p1 = detail::place(b.nodes[b1].bv, rel);
-        d0 = bound(a0, b0, p0);
-        d1 = bound(a1, b1, p1);
+        const Rss ra = a.bv(static_cast<std::size_t>(e.a));  // shared by both tests
+        detail::PlacedRss p0 = detail::place(b, b0, rel);
+        detail::PlacedRss p1 = detail::place(b, b1, rel);
+        d0 = bound(ra, p0);
+        d1 = bound(ra, p1);
       }
       // The nearer pair next; ties keep the first child first (deterministic).
       if (d1 < d0) {
@@ -350,12 +348,10 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
   if (a.empty() || b.empty() || !(threshold > 0.0)) return out;
   const Relative rel(pose_a, pose_b);
   // A node pair whose RSS lower bound reaches the threshold holds no reported pair.
-  auto near = [&](std::int32_t ia, std::int32_t ib) {
+  auto near = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
-    const Rss& na = a.nodes[ia].bv;
-    const Rss& nb = b.nodes[ib].bv;
-    const double radii = na.radius + nb.radius;
-    return rectangle_lower_bound(node_pair(na, nb, rel), threshold + radii) - radii < threshold;
+    const double radii = na.radius + pb.rss.radius;
+    return rectangle_lower_bound(node_pair(na, pb.rss, pb), threshold + radii) - radii < threshold;
   };
   auto leaves = [&](const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
@@ -369,7 +365,7 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
     }
     return true;
   };
-  detail::for_each_leaf_pair(a, b, near, leaves);
+  detail::for_each_leaf_pair(a, b, rel, near, leaves);
   auto& v = out.pairs.pairs;
   sort_pairs(v);
   v.erase(std::unique(v.begin(), v.end(), [](const ContactPair& x, const ContactPair& y) {

@@ -21,12 +21,10 @@ SweepResult sweep_translation(const Bvh& a, const Pose& pose_a, const Bvh& b, co
   // The translation in A's model frame.
   const Vec3 sweep = pose_a.rotation.transpose() * request.translation;
   const double margin = std::max(request.margin, 0.0);
-  auto near = [&](std::int32_t ia, std::int32_t ib) {
+  auto near = [&](std::int32_t ia, std::int32_t ib, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
-    const Rss& na = a.nodes[ia].bv;
-    const Rss& nb = b.nodes[ib].bv;
-    const double radii = na.radius + nb.radius;
-    const RectanglePair pair = detail::node_pair(na, nb, rel);
+    const double radii = na.radius + pb.rss.radius;
+    const RectanglePair pair = detail::node_pair(na, pb.rss, pb);
     if (swept_rectangle_lower_bound(pair, na.axes.transpose() * sweep, margin + radii) - radii > margin) return false;
     return !(request.exclude_nodes_if && (*request.exclude_nodes_if)(ia, ib));
   };
@@ -45,7 +43,7 @@ SweepResult sweep_translation(const Bvh& a, const Pose& pose_a, const Bvh& b, co
     }
     return true;
   };
-  detail::for_each_leaf_pair(a, b, near, leaves);
+  detail::for_each_leaf_pair(a, b, rel, near, leaves);
   return out;
 }
 

@@ -29,10 +29,11 @@ struct Relative {
   }
 };
 
-/// A node of B placed in A's model frame: its center at once, its axes on first use (a
-/// bounding-sphere test often settles a pair from the centers alone).
+/// A node of B decoded (Node stores it compactly) and placed in A's model frame: its center at
+/// once, its axes on first use (a bounding-sphere test often settles a pair from the centers
+/// alone).
 struct PlacedRss {
-  const Rss* rss = nullptr;
+  Rss rss;  ///< in B's model frame
   const Relative* rel = nullptr;
   Vec3 center;
   Mat3 axes_;
@@ -40,7 +41,7 @@ struct PlacedRss {
 
   const Mat3& axes() {
     if (!has_axes) {
-      axes_.noalias() = rel->rotation * rss->axes;
+      axes_.noalias() = rel->rotation * rss.axes;
       has_axes = true;
     }
     return axes_;
@@ -49,15 +50,20 @@ struct PlacedRss {
 
 inline PlacedRss place(const Rss& nb, const Relative& rel) {
   PlacedRss p;
-  p.rss = &nb;
+  p.rss = nb;
   p.rel = &rel;
   p.center.noalias() = rel.rotation * nb.center;
   p.center += rel.translation;
   return p;
 }
 
+/// Node `i` of B, decoded and placed in A's frame.
+inline PlacedRss place(const Bvh& b, std::int32_t i, const Relative& rel) {
+  return place(b.bv(static_cast<std::size_t>(i)), rel);
+}
+
 /// Rectangles of node `na` of A and node `nb` of B (placed in A's frame), in na's frame.
-inline RectanglePair node_pair(const Rss& na, const Rss& nb, PlacedRss& placed) {
+[[gnu::always_inline]] inline RectanglePair node_pair(const Rss& na, const Rss& nb, PlacedRss& placed) {
   RectanglePair p;
   p.rotation.noalias() = na.axes.transpose() * placed.axes();
   p.translation.noalias() = na.axes.transpose() * (placed.center - na.center);
@@ -80,19 +86,16 @@ inline double coordinate_bound(const Bvh& a, const Bvh& b, const Relative& rel) 
   auto bound = [](const Rss& v, const Vec3& c) {
     return c.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
   };
-  const Rss& ra = a.nodes[0].bv;
-  const Rss& rb = b.nodes[0].bv;
+  const Rss ra = a.bv(0);
+  const Rss rb = b.bv(0);
   return std::max(bound(ra, ra.center), bound(rb, rel.rotation * rb.center + rel.translation));
 }
 
-/// Size used to pick which node of a pair to descend.
-inline double node_size(const Rss& v) { return v.half_length[0] + v.half_length[1] + v.radius; }
-
-/// True when node a (rather than node b) should be split.
+/// True when node a (rather than node b) should be split: the larger one (Node::size).
 inline bool descend_a(const Node& a, const Node& b) {
   if (b.is_leaf()) return true;
   if (a.is_leaf()) return false;
-  return node_size(a.bv) >= node_size(b.bv);
+  return a.size() >= b.size();
 }
 
 /// A node pair waiting on the traversal stack, with its lower bound.
@@ -139,15 +142,21 @@ class PairStack {
   std::size_t size_ = 0;
 };
 
-/// The overlap traversal shared by collide and proximity_pairs: node pairs depth first from a
-/// fixed-capacity stack, the larger node of a pair split (descend_a), its first child visited
-/// first. `keep(ia, ib)` decides whether the pair of nodes ia of A and ib of B can hold a
-/// reported triangle pair (the root pair included); `leaves(na, nb)` visits every kept pair of
-/// leaves and returns false to stop the traversal. (The distance search orders its pairs by
-/// their bounds instead and keeps its own loop, query.cpp.)
+/// The overlap traversal shared by collide, proximity_pairs and sweep_translation: node pairs
+/// depth first from a fixed-capacity stack, the larger node of a pair split (descend_a), its
+/// first child visited first. `keep(ia, ib, ra, pb)` decides whether the pair of nodes ia of A
+/// and ib of B can hold a reported triangle pair (the root pair included), given ia's RSS `ra`
+/// and ib's placed in A's frame `pb` (each decoded once for both children of a split);
+/// `leaves(na, nb)` visits every kept pair of leaves and returns false to stop the traversal.
+/// (The distance search orders its pairs by their bounds instead and keeps its own loop,
+/// query.cpp.)
 template <class Keep, class Leaves>
-void for_each_leaf_pair(const Bvh& a, const Bvh& b, Keep&& keep, Leaves&& leaves) {
-  if (a.empty() || b.empty() || !keep(0, 0)) return;
+void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, Keep&& keep, Leaves&& leaves) {
+  if (a.empty() || b.empty()) return;
+  {
+    PlacedRss root_b = place(b, 0, rel);
+    if (!keep(0, 0, a.bv(0), root_b)) return;
+  }
   PairStack stack(a, b);
   stack.push(0, 0, 0.0);
   while (!stack.empty()) {
@@ -160,11 +169,15 @@ void for_each_leaf_pair(const Bvh& a, const Bvh& b, Keep&& keep, Leaves&& leaves
     }
     // Pushed second child first, so that the first child is visited first.
     if (descend_a(na, nb)) {
+      PlacedRss pb = place(b, e.b, rel);
       for (std::int32_t c = na.first + 1; c >= na.first; --c)
-        if (keep(c, e.b)) stack.push(c, e.b, 0.0);
+        if (keep(c, e.b, a.bv(static_cast<std::size_t>(c)), pb)) stack.push(c, e.b, 0.0);
     } else {
-      for (std::int32_t c = nb.first + 1; c >= nb.first; --c)
-        if (keep(e.a, c)) stack.push(e.a, c, 0.0);
+      const Rss ra = a.bv(static_cast<std::size_t>(e.a));
+      for (std::int32_t c = nb.first + 1; c >= nb.first; --c) {
+        PlacedRss pc = place(b, c, rel);
+        if (keep(e.a, c, ra, pc)) stack.push(e.a, c, 0.0);
+      }
     }
   }
 }

@@ -65,14 +65,17 @@ TEST(BvhCli, JsonForEveryFitterAndSplit) {
 
 // The memory a tree reports is what it holds: nodes, triangles, their input indices and the struct,
 // counted here from the layout (50 triangles: 99 nodes at one triangle per leaf; one leaf of all
-// 50 at leaf size 50), and per triangle.
+// 50 at leaf size 50), and per triangle. Triangles are three indices into shared vertices: the
+// strip's triangle i has corners (i, 0, 0), (i + 1, 0, 0) and (i, 1, i / 10), so its 150 corners
+// are 51 points on the x axis and 50 others: 101 vertices.
 TEST(BvhCli, MemoryPerTriangleAtEachLeafSize) {
   const fs::path dir = fs::temp_directory_path() / ("swept_bvh_cli_mem_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   TriangleSoup soup;
   for (int i = 0; i < 50; ++i) soup.triangles.push_back({Vec3(i, 0, 0), Vec3(i + 1, 0, 0), Vec3(i, 1, 0.1 * i)});
   ASSERT_TRUE(write_stl_binary(dir / "strip.stl", soup));
-  const std::size_t per_triangle = sizeof(Triangle) + sizeof(std::uint32_t);
+  const std::size_t per_triangle = 3 * sizeof(std::uint32_t) + sizeof(std::uint32_t);
+  const std::size_t vertices = 101 * sizeof(Vec3);
   for (const auto& [leaf, nodes] : std::array<std::pair<int, std::size_t>, 2>{{{1, 99}, {50, 1}}}) {
     std::string out;
     ASSERT_EQ(run_cli("bvh " + (dir / "strip.stl").string() + " --leaf-size " + std::to_string(leaf) + " --json", out), 0) << out;
@@ -80,7 +83,7 @@ TEST(BvhCli, MemoryPerTriangleAtEachLeafSize) {
     const auto& f = doc["meshes"][0]["fitters"][0];
     EXPECT_EQ(f["leaf_size"].get<int>(), leaf);
     EXPECT_EQ(f["nodes"].get<std::size_t>(), nodes);
-    const std::size_t bytes = nodes * sizeof(Node) + 50 * per_triangle + sizeof(Bvh);
+    const std::size_t bytes = nodes * sizeof(Node) + 50 * per_triangle + vertices + sizeof(Bvh);
     EXPECT_EQ(f["bytes"].get<std::size_t>(), bytes);
     EXPECT_DOUBLE_EQ(f["bytes_per_triangle"].get<double>(), static_cast<double>(bytes) / 50.0);
   }

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <numbers>
@@ -43,7 +46,7 @@ void expect_containment(const Bvh& bvh, const std::string& what) {
   for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
     for (int t = range[i].first; t < range[i].second; ++t)
       for (int v = 0; v < 3; ++v) {
-        const double d = signed_distance(bvh.nodes[i].bv, bvh.triangles[t][v]);
+        const double d = signed_distance(bvh.bv(i), bvh.triangles[t][v]);
         worst = std::max(worst, d);
         if (d > tol) ++bad;
       }
@@ -179,6 +182,7 @@ TEST(BuildBvh, ParallelEqualsSerialNodeForNode) {
       ASSERT_EQ(serial->nodes.size(), parallel->nodes.size()) << what;
       EXPECT_EQ(std::memcmp(serial->nodes.data(), parallel->nodes.data(), serial->nodes.size() * sizeof(Node)), 0) << what;
       EXPECT_EQ(serial->triangle_ids, parallel->triangle_ids) << what;
+      EXPECT_EQ(serial->triangles.corners, parallel->triangles.corners) << what;
       EXPECT_EQ(serial->depth, parallel->depth) << what;
       expect_structure(*parallel, tris.size(), leaf);
       if (leaf > 1) expect_containment(*parallel, what);
@@ -196,6 +200,86 @@ TEST(BuildBvh, RejectsBadInput) {
   tris[1].q.y() = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(build_bvh(tris));
   EXPECT_FALSE(build_bvh(std::vector<Triangle>(1), {.leaf_size = 0}));
+  // Nodes are stored in single precision: coordinates beyond ±1e30 are refused, by triangle.
+  tris[1].q.y() = -2e30;
+  r = build_bvh(tris);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("triangle 1"), std::string::npos) << r.error().message;
+  EXPECT_NE(r.error().message.find("1e30"), std::string::npos) << r.error().message;
+  tris[1].q.y() = 1e29;
+  EXPECT_TRUE(build_bvh(tris));
+}
+
+// A stored node (single precision, encode_rss) contains every point of the RSS it was given:
+// corners of the rectangle pushed out by the radius in seeded directions, on RSSs of every
+// scale, far from and near the tree's origin, and for axes that are no rotation at all.
+TEST(BuildBvh, StoredNodesContainTheirRss) {
+  Rng rng(4242);
+  double worst = -1e300;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double scale = std::pow(10.0, rng.uniform(-6, 6));
+    Rss v;
+    v.axes = rng.rotation();
+    if (trial % 50 == 0) v.axes.col(2) = -v.axes.col(2);  // a reflection
+    if (trial % 50 == 1) v.axes = Mat3::Identity();
+    const Vec3 origin = rng.vec(-1e3, 1e3) * scale;
+    v.center = origin + rng.vec(-1e3, 1e3) * scale * (trial % 3 == 0 ? 1e-3 : 1.0);
+    v.half_length = {rng.uniform(0, 1) * scale, rng.uniform(0, 0.1) * scale};
+    v.radius = trial % 4 == 0 ? 0.0 : rng.uniform(0, 0.1) * scale;
+    Node n;
+    encode_rss(v, origin, n);
+    const Rss stored = decode_rss(n, origin);
+    const double magnitude = v.center.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
+    for (int k = 0; k < 8; ++k) {
+      Vec3 u = rng.vec(-1, 1);
+      u = u.norm() > 0 ? u.normalized() : Vec3::UnitX();
+      const double s = (k & 1 ? 1 : -1) * v.half_length[0], t = (k & 2 ? 1 : -1) * v.half_length[1];
+      const Vec3 p = v.center + s * v.axes.col(0) + t * v.axes.col(1) + v.radius * u;
+      // signed_distance itself rounds, at about 1e-16 of the coordinates.
+      const double d = signed_distance(stored, p) / magnitude;
+      worst = std::max(worst, d);
+      ASSERT_LE(d, 1e-14) << "trial " << trial << " corner " << k;
+    }
+    // Outward, but not by much: lengths within float precision of the offset and the size.
+    const double slack = 8 * 6e-8 * ((v.center - origin).norm() + v.half_length[0] + v.half_length[1] + v.radius);
+    if (trial % 50 > 0) {
+      EXPECT_LE(stored.radius, v.radius + slack) << trial;
+      EXPECT_LE(stored.half_length[0], v.half_length[0] + slack) << trial;
+    }
+  }
+  EXPECT_LE(worst, 1e-14);
+}
+
+// Triangles read back bit for bit as they were given, in leaf order (triangle_ids), with
+// vertices shared only where equal bit for bit (so 0.0 and -0.0 stay apart).
+TEST(BuildBvh, TrianglesReadBackBitForBitWithSharedVertices) {
+  Rng rng(77);
+  std::vector<Triangle> tris = test::box_triangles(Vec3(0, 0, 0), Vec3(1, 2, 3));  // 8 corners, 12 triangles
+  tris.push_back({Vec3(-0.0, 0, 0), Vec3(1, 0, 0), Vec3(0, 2, 0)});  // -0.0: a 9th vertex
+  const auto more = test::nasty_triangles(rng, 500, 5.0);
+  tris.insert(tris.end(), more.begin(), more.end());
+  auto bvh = build_bvh(tris);
+  ASSERT_TRUE(bvh);
+  ASSERT_EQ(bvh->triangles.size(), tris.size());
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const Triangle got = bvh->triangles[i];
+    const Triangle& want = tris[bvh->triangle_ids[i]];
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(std::memcmp(got[c].data(), want[c].data(), sizeof(Vec3)), 0) << i;
+  }
+  // Every distinct vertex once: count the distinct bit patterns independently.
+  std::vector<std::array<std::uint64_t, 3>> keys;
+  for (const Triangle& t : tris)
+    for (int c = 0; c < 3; ++c) {
+      std::array<std::uint64_t, 3> k;
+      std::memcpy(k.data(), t[c].data(), sizeof(k));
+      keys.push_back(k);
+    }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  EXPECT_EQ(bvh->triangles.vertices.size(), keys.size());
+  auto box_only = build_bvh(std::vector<Triangle>(tris.begin(), tris.begin() + 13));
+  ASSERT_TRUE(box_only);
+  EXPECT_EQ(box_only->triangles.vertices.size(), 9u);
 }
 
 TEST(BuildBvh, SingleTriangleAndAllDegenerate) {
@@ -208,7 +292,8 @@ TEST(BuildBvh, SingleTriangleAndAllDegenerate) {
     auto b = build_bvh(points, {.fitter = f});
     ASSERT_TRUE(b);
     expect_containment(*b, "points");
-    for (const Node& n : b->nodes) EXPECT_TRUE(n.bv.axes.allFinite() && std::isfinite(n.bv.radius));
+    for (std::size_t i = 0; i < b->nodes.size(); ++i)
+      EXPECT_TRUE(b->bv(i).axes.allFinite() && std::isfinite(b->bv(i).radius));
   }
 }
 
@@ -220,12 +305,12 @@ TEST(BuildBvh, StatsAddUp) {
   EXPECT_EQ(s.triangles, 12u);
   EXPECT_EQ(s.nodes, 23u);
   double sa = 0;
-  for (const Node& n : bvh->nodes) sa += surface_area(n.bv);
+  for (std::size_t i = 0; i < bvh->nodes.size(); ++i) sa += surface_area(bvh->bv(i));
   EXPECT_DOUBLE_EQ(s.total_surface_area, sa);
   EXPECT_GT(s.total_volume, 0.0);
-  EXPECT_GE(s.bytes, 23 * sizeof(Node) + 12 * sizeof(Triangle));
+  EXPECT_GE(s.bytes, 23 * sizeof(Node) + 8 * sizeof(Vec3) + 12 * 3 * sizeof(std::uint32_t));
   // The root RSS holds the whole box: its SA is at least the box's.
-  EXPECT_GE(surface_area(bvh->nodes[0].bv), 2 * (2 + 3 + 6) - 1e-9);
+  EXPECT_GE(surface_area(bvh->bv(0)), 2 * (2 + 3 + 6) - 1e-9);
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ std::size_t count_outside(const Bvh& bvh, double& worst) {
       for (int t = n.first; t < n.first + n.count; ++t)
         for (int v = 0; v < 3; ++v)
           for (int a : chain) {
-            const double d = signed_distance(bvh.nodes[static_cast<std::size_t>(a)].bv, bvh.triangles[static_cast<std::size_t>(t)][v]);
+            const double d = signed_distance(bvh.bv(static_cast<std::size_t>(a)), bvh.triangles[static_cast<std::size_t>(t)][v]);
             worst = std::max(worst, d / bvh.extent);
             bad += d > tol ? 1 : 0;
           }

@@ -141,7 +141,9 @@ bool check_node(const Bvh& bvh, const std::vector<std::pair<int, int>>& range, s
   if (node.is_leaf()) return false;
   const auto [begin, end] = range[i];
   const int middle = range[static_cast<std::size_t>(node.first)].second;
-  const std::span<const Triangle> tris(bvh.triangles.data() + begin, static_cast<std::size_t>(end - begin));
+  std::vector<Triangle> node_triangles;
+  for (int t = begin; t < end; ++t) node_triangles.push_back(bvh.triangles[static_cast<std::size_t>(t)]);
+  const std::span<const Triangle> tris(node_triangles);
   const Fit f = fit(tris, fitter);
   const Vec3 ev = f.eigenvalues;
   if (!(ev[0] > 0) || ev[0] - ev[1] < 1e-6 * ev[0] || ev[1] - ev[2] < 1e-6 * ev[0]) return false;

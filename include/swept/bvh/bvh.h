@@ -5,7 +5,10 @@
 #include "swept/geometry/rss.h"
 #include "swept/geometry/types.h"
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <span>
 #include <string>
 #include <string_view>
@@ -89,34 +92,128 @@ struct BuildConfig {
   bool parallel = true;    ///< use oneTBB; the tree is identical either way
 };
 
-/// One node of the flat tree: 128 bytes. A leaf holds `count` > 0 triangles starting at
-/// `first` in `Bvh::triangles`; an internal node has `count` == 0 and its children at
+/// One node of the flat tree: 48 bytes. Its RSS is stored in single precision and rounded
+/// outward (see `encode_rss`): the quaternion of its axes, its center relative to
+/// `Bvh::origin`, its half-lengths and its radius. A leaf holds `count` > 0 triangles starting
+/// at `first` in `Bvh::triangles`; an internal node has `count` == 0 and its children at
 /// `first` and `first + 1` (siblings are adjacent).
 struct Node {
-  Rss bv;                  ///< in the model frame; contains every vertex of the subtree
+  std::array<float, 4> rotation{1.0f, 0.0f, 0.0f, 0.0f};  ///< quaternion (w, x, y, z), any norm
+  std::array<float, 3> center{0.0f, 0.0f, 0.0f};          ///< relative to the tree's origin
+  std::array<float, 2> half_length{0.0f, 0.0f};
+  float radius = 0.0f;
   std::int32_t first = 0;
   std::int32_t count = 0;
 
   bool is_leaf() const { return count > 0; }
+  /// Half-lengths plus radius: which node of a pair a traversal splits.
+  float size() const { return half_length[0] + half_length[1] + radius; }
 };
-static_assert(sizeof(Node) == 128, "Node byte budget");
+static_assert(sizeof(Node) == 48, "Node byte budget");
+
+/// The rotation matrix of a quaternion (w, x, y, z) of any non-zero norm, computed in double
+/// precision: orthonormal to rounding. Builds and queries share it, so a stored node decodes to
+/// the same axes everywhere.
+inline Mat3 rotation_of(const std::array<float, 4>& q) {
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  const double s = 2.0 / (w * w + x * x + y * y + z * z);
+  const double xs = x * s, ys = y * s, zs = z * s;
+  const double wx = w * xs, wy = w * ys, wz = w * zs;
+  const double xx = x * xs, xy = x * ys, xz = x * zs;
+  const double yy = y * ys, yz = y * zs, zz = z * zs;
+  Mat3 r;
+  r << 1.0 - (yy + zz), xy - wz, xz + wy,  //
+      xy + wz, 1.0 - (xx + zz), yz - wx,   //
+      xz - wy, yz + wx, 1.0 - (xx + yy);
+  return r;
+}
+
+/// The RSS a node stores, in the model frame (`origin` is the tree's).
+inline Rss decode_rss(const Node& n, const Vec3& origin) {
+  Rss v;
+  v.axes = rotation_of(n.rotation);
+  v.center = origin + Vec3(n.center[0], n.center[1], n.center[2]);
+  v.half_length = {n.half_length[0], n.half_length[1]};
+  v.radius = n.radius;
+  return v;
+}
+
+/// Stores `rss` (its center relative to `origin`) in `node`, rounded outward: the stored RSS
+/// contains every point of `rss`. The quaternion is rounded to single precision and the axes it
+/// decodes to differ from `rss.axes` by δ1, δ2 (columns) and the center by δc; the radius grows
+/// by ‖δc‖ + a‖δ1‖ + b‖δ2‖ (a, b the half-lengths), which covers that, and every length is
+/// rounded up. Any 3×3 `axes` is accepted; the closer to a rotation, the tighter the result.
+void encode_rss(const Rss& rss, const Vec3& origin, Node& node);
+
+/// A tree's triangles: each one three indices into a vertex array, vertices shared where their
+/// coordinates are equal bit for bit (so every triangle reads back exactly as it was given).
+struct IndexedTriangles {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> corners;
+
+  std::size_t size() const { return corners.size(); }
+  bool empty() const { return corners.empty(); }
+  Triangle operator[](std::size_t i) const {
+    const std::array<std::uint32_t, 3>& c = corners[i];
+    return {vertices[c[0]], vertices[c[1]], vertices[c[2]]};
+  }
+  /// Bytes held (capacity) by the two arrays.
+  std::size_t memory_bytes() const {
+    return vertices.capacity() * sizeof(Vec3) + corners.capacity() * sizeof(corners[0]);
+  }
+
+  /// Input iterator over the triangles, by value.
+  class const_iterator {
+   public:
+    using value_type = Triangle;
+    using difference_type = std::ptrdiff_t;
+    const_iterator() = default;
+    const_iterator(const IndexedTriangles* t, std::size_t i) : t_(t), i_(i) {}
+    Triangle operator*() const { return (*t_)[i_]; }
+    const_iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    const_iterator operator++(int) {
+      const_iterator old = *this;
+      ++i_;
+      return old;
+    }
+    bool operator==(const const_iterator& o) const { return i_ == o.i_; }
+
+   private:
+    const IndexedTriangles* t_ = nullptr;
+    std::size_t i_ = 0;
+  };
+  const_iterator begin() const { return {this, 0}; }
+  const_iterator end() const { return {this, size()}; }
+  /// The triangles as a soup, in order.
+  std::vector<Triangle> to_soup() const;
+};
+
+/// The bounding box of the triangles (of their vertices).
+Aabb bounds(const IndexedTriangles& triangles);
 
 /// An immutable RSS tree over a triangle soup. Safe to share between threads for queries.
 struct Bvh {
   std::vector<Node> nodes;                ///< nodes[0] is the root
-  std::vector<Triangle> triangles;        ///< the input triangles, reordered leaf by leaf
+  Vec3 origin = Vec3::Zero();             ///< node centers are stored relative to it
+  IndexedTriangles triangles;             ///< the input triangles, reordered leaf by leaf
   std::vector<std::uint32_t> triangle_ids;///< triangle_ids[i]: input index of triangles[i]
   BuildConfig config;                     ///< how it was built
   int depth = 0;                          ///< levels: 1 for a single leaf
   double extent = 0.0;                    ///< diagonal of the model's bounding box
 
   bool empty() const { return nodes.empty(); }
+  /// The RSS of node `i`, in the model frame (decoded: see `decode_rss`).
+  Rss bv(std::size_t i) const { return decode_rss(nodes[i], origin); }
   /// Bytes held by the tree: its arrays' capacity (nodes, triangles and ids) and the struct.
   std::size_t memory_bytes() const;
 };
 
 /// Builds the RSS tree of a triangle soup (SPEC §2). Errors (never exceptions): empty input,
-/// NaN or infinite coordinates (the triangle is named). Degenerate triangles are accepted.
+/// NaN or infinite coordinates, coordinates beyond ±1e30 (nodes are stored in single precision;
+/// the triangle is named). Degenerate triangles are accepted.
 /// With `config.parallel` the work is spread over oneTBB's threads; the tree is the same,
 /// node for node, as a serial build.
 Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& config = {});
