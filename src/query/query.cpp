@@ -123,14 +123,35 @@ struct DistanceSearch {
     }
     return false;
   }
-  /// Lower bound for node ia of A against node ib of B (already placed in A's frame); the
+  /// Lower bound for a node of A (`na`) against a node of B placed in A's frame (`pb`); the
   /// bound computation stops as soon as it reaches the prune level.
-  double bound(const Rss& na, detail::PlacedRss& placed_b) {
+  double bound(const Rss& na, detail::PlacedRss& pb) {
     ++stats.bv_tests;
-    const Rss& nb = placed_b.rss;
+    const Rss& nb = pb.rss;
     const double level = prune_level();
     const double radii = na.radius + nb.radius;
-    return rectangle_lower_bound(node_pair(na, nb, placed_b), level + radii) - radii;
+    return rectangle_lower_bound(node_pair(na, nb, pb), level + radii) - radii;
+  }
+
+  // The last node of A decoded and the last node of B placed, by index (see run()).
+  std::int32_t memo_a = -1, memo_b = -1;
+  Rss rss_a;
+  detail::PlacedRss placed_b;
+  const Rss& node_of_a(std::int32_t i) {
+    if (i != memo_a) remember_a(i, a.bv(static_cast<std::size_t>(i)));
+    return rss_a;
+  }
+  detail::PlacedRss& placed_of_b(std::int32_t i) {
+    if (i != memo_b) remember_b(i, detail::place(b, i, rel));
+    return placed_b;
+  }
+  void remember_a(std::int32_t i, const Rss& v) {
+    memo_a = i;
+    rss_a = v;
+  }
+  void remember_b(std::int32_t i, const detail::PlacedRss& p) {
+    memo_b = i;
+    placed_b = p;
   }
 
   void leaves(const Node& na, const Node& nb) {
@@ -161,8 +182,7 @@ struct DistanceSearch {
 
   void run() {
     if (a.empty() || b.empty()) return;
-    detail::PlacedRss root_b = detail::place(b, 0, rel);
-    const double root = bound(a.bv(0), root_b);
+    const double root = bound(node_of_a(0), placed_of_b(0));
     if (prune(root)) return;
     // The waiting pairs: a heap while best first, then a stack (its back on top). The buffer is
     // the thread's, reused from query to query; taken out while in use, so a nested search on
@@ -234,25 +254,29 @@ struct DistanceSearch {
       if (leaf0 && leaf1) continue;
       if (leaf0 || leaf1) {
         const std::int32_t ca = leaf0 ? a1 : a0, cb = leaf0 ? b1 : b0;
-        detail::PlacedRss placed = detail::place(b, cb, rel);
-        const double d = bound(a.bv(static_cast<std::size_t>(ca)), placed);
+        const double d = bound(node_of_a(ca), placed_of_b(cb));
         if (!prune(d)) {
           next = {ca, cb, d};
           diving = true;
         }
         continue;
       }
+      // Each test decodes only the child it is about; the node both share is decoded once, and
+      // the nearer child is kept for the next step of the dive (which often splits the other side).
       double d0, d1;
       if (split_a) {
-        detail::PlacedRss placed = detail::place(b, e.b, rel);  // shared by both tests
-        d0 = bound(a.bv(static_cast<std::size_t>(a0)), placed);
-        d1 = bound(a.bv(static_cast<std::size_t>(a1)), placed);
+        detail::PlacedRss& placed = placed_of_b(e.b);
+        Rss r0 = a.bv(static_cast<std::size_t>(a0)), r1 = a.bv(static_cast<std::size_t>(a1));
+        d0 = bound(r0, placed);
+        d1 = bound(r1, placed);
+        remember_a(d1 < d0 ? a1 : a0, d1 < d0 ? r1 : r0);
       } else {
-        const Rss ra = a.bv(static_cast<std::size_t>(e.a));  // shared by both tests
+        const Rss& ra = node_of_a(e.a);
         detail::PlacedRss p0 = detail::place(b, b0, rel);
         detail::PlacedRss p1 = detail::place(b, b1, rel);
         d0 = bound(ra, p0);
         d1 = bound(ra, p1);
+        remember_b(d1 < d0 ? b1 : b0, d1 < d0 ? p1 : p0);
       }
       // The nearer pair next; ties keep the first child first (deterministic).
       if (d1 < d0) {

@@ -159,6 +159,9 @@ void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, Keep&& 
   }
   PairStack stack(a, b);
   stack.push(0, 0, 0.0);
+  std::int32_t memo_a = -1, memo_b = -1;  // the nodes held in rss_a and placed
+  Rss rss_a;
+  PlacedRss placed;
   while (!stack.empty()) {
     const PairEntry e = stack.pop();
     const Node& na = a.nodes[e.a];
@@ -167,16 +170,33 @@ void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, Keep&& 
       if (!leaves(na, nb)) return;
       continue;
     }
-    // Pushed second child first, so that the first child is visited first.
+    // Pushed second child first, so that the first child is visited first. The first child is
+    // the last one decoded and the next pair popped: kept for that pair's split of the other side.
     if (descend_a(na, nb)) {
-      PlacedRss pb = place(b, e.b, rel);
-      for (std::int32_t c = na.first + 1; c >= na.first; --c)
-        if (keep(c, e.b, a.bv(static_cast<std::size_t>(c)), pb)) stack.push(c, e.b, 0.0);
+      if (memo_b != e.b) {
+        placed = place(b, e.b, rel);
+        memo_b = e.b;
+      }
+      for (std::int32_t c = na.first + 1; c >= na.first; --c) {
+        const Rss rc = a.bv(static_cast<std::size_t>(c));
+        if (keep(c, e.b, rc, placed)) stack.push(c, e.b, 0.0);
+        if (c == na.first) {
+          rss_a = rc;
+          memo_a = c;
+        }
+      }
     } else {
-      const Rss ra = a.bv(static_cast<std::size_t>(e.a));
+      if (memo_a != e.a) {
+        rss_a = a.bv(static_cast<std::size_t>(e.a));
+        memo_a = e.a;
+      }
       for (std::int32_t c = nb.first + 1; c >= nb.first; --c) {
         PlacedRss pc = place(b, c, rel);
-        if (keep(e.a, c, ra, pc)) stack.push(e.a, c, 0.0);
+        if (keep(e.a, c, rss_a, pc)) stack.push(e.a, c, 0.0);
+        if (c == nb.first) {
+          placed = pc;
+          memo_b = c;
+        }
       }
     }
   }
