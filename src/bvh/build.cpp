@@ -364,7 +364,7 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> table(slots, kEmpty);
   std::vector<Vec3> vertices;
-  auto index_of = [&](const Vec3& v) {
+  auto table_index = [&](const Vec3& v) -> std::uint32_t {
     std::uint64_t k[3];
     std::memcpy(k, v.data(), sizeof(k));
     std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ULL;
@@ -380,6 +380,20 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
       }
       if (std::memcmp(vertices[idx].data(), v.data(), sizeof(k)) == 0) return idx;
     }
+  };
+  // In leaf order neighbouring triangles mostly share vertices: the last few vertices met are
+  // compared first (in cache), the table only on a miss.
+  constexpr std::size_t kRecent = 8;
+  std::array<std::uint32_t, kRecent> recent;
+  recent.fill(kEmpty);
+  std::size_t recent_next = 0;
+  auto index_of = [&](const Vec3& v) {
+    for (const std::uint32_t r : recent)
+      if (r != kEmpty && std::memcmp(vertices[r].data(), v.data(), sizeof(Vec3)) == 0) return r;
+    const std::uint32_t idx = table_index(v);
+    recent[recent_next] = idx;
+    recent_next = (recent_next + 1) % kRecent;
+    return idx;
   };
   for (std::size_t i = 0; i < n; ++i) {
     const Triangle& t = triangles[ids[i]];
