@@ -46,12 +46,6 @@ Aabb bounds(const IndexedTriangles& triangles) {
   return box;
 }
 
-std::vector<Triangle> IndexedTriangles::to_soup() const {
-  std::vector<Triangle> out(size());
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = (*this)[i];
-  return out;
-}
-
 namespace {
 
 // x rounded to a float, the rounding kept: GCC 12's SLP vectorizer (-O2 and up) drops a

@@ -16,8 +16,8 @@ namespace swept {
 
 double motion_radius(const Bvh& b, const Vec3& reference) {
   double r2 = 0.0;
-  for (const Triangle& t : b.triangles)
-    for (int i = 0; i < 3; ++i) r2 = std::max(r2, (t[i] - reference).squaredNorm());
+  // Every vertex of the tree once (its triangles share them).
+  for (const Vec3& v : b.triangles.vertices) r2 = std::max(r2, (v - reference).squaredNorm());
   return std::sqrt(r2);
 }
 

@@ -8,7 +8,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <span>
 #include <string>
 #include <string_view>
@@ -161,34 +160,6 @@ struct IndexedTriangles {
   std::size_t memory_bytes() const {
     return vertices.capacity() * sizeof(Vec3) + corners.capacity() * sizeof(corners[0]);
   }
-
-  /// Input iterator over the triangles, by value.
-  class const_iterator {
-   public:
-    using value_type = Triangle;
-    using difference_type = std::ptrdiff_t;
-    const_iterator() = default;
-    const_iterator(const IndexedTriangles* t, std::size_t i) : t_(t), i_(i) {}
-    Triangle operator*() const { return (*t_)[i_]; }
-    const_iterator& operator++() {
-      ++i_;
-      return *this;
-    }
-    const_iterator operator++(int) {
-      const_iterator old = *this;
-      ++i_;
-      return old;
-    }
-    bool operator==(const const_iterator& o) const { return i_ == o.i_; }
-
-   private:
-    const IndexedTriangles* t_ = nullptr;
-    std::size_t i_ = 0;
-  };
-  const_iterator begin() const { return {this, 0}; }
-  const_iterator end() const { return {this, size()}; }
-  /// The triangles as a soup, in order.
-  std::vector<Triangle> to_soup() const;
 };
 
 /// The bounding box of the triangles (of their vertices).
