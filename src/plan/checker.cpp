@@ -2,16 +2,27 @@
 // planner's phases and the final certification (checker.h).
 #include "checker.h"
 
+#include <cmath>
+#include <limits>
+
 namespace swept::detail {
 
 DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint) const {
   ++distance_queries_;
-  const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint};
+  const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint,
+                                .stop_below = decide_blocked_ ? margin_ : -std::numeric_limits<double>::infinity()};
   return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
 }
 
 double Checker::clearance(const Pose& pose, double enough, bool relaxed) const {
   return query(pose, enough, relaxed).distance;
+}
+
+bool Checker::free(const Pose& pose) const {
+  // Exact below the next double above the margin, a lower bound at or above it otherwise: either
+  // way "above the margin" is decided.
+  const double above = std::nextafter(margin_, std::numeric_limits<double>::infinity());
+  return query(pose, above, false).distance > margin_;
 }
 
 DistanceResult Checker::nearest(const Pose& pose, double enough) const { return query(pose, enough, false); }

@@ -36,6 +36,9 @@ class Checker {
 
   /// A lower bound on the distance at `pose`, exact below `enough`.
   double clearance(const Pose& pose, double enough, bool relaxed = false) const;
+  /// Is the distance at `pose` above the margin? The cheapest query: it stops as soon as every
+  /// pair left is proved farther than the margin (nothing else is asked of it).
+  bool free(const Pose& pose) const;
   /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
   double below(const Pose& pose, double bound, bool relaxed = false) const;
   /// The distance at `pose` with its witness points (world), exact below `enough` (counted).
@@ -61,6 +64,11 @@ class Checker {
   double margin() const { return margin_; }
   const Vec3& reference() const { return reference_; }
   double radius() const { return radius_; }
+  /// While set, a query stops as soon as it finds a pair closer than the margin: a blocked pose
+  /// is decided, not measured (its distance is then some pair's, ≤ the margin, not the
+  /// smallest), which is all the search asks of it; free poses are measured as before. Off by
+  /// default: `swept check` reports the exact distance where a path is blocked.
+  void set_decide_blocked(bool on) { decide_blocked_ = on; }
   /// While set, certificates that run past this time give up (not clear).
   void set_deadline(std::optional<Clock::time_point> t) { deadline_ = t; }
 
@@ -79,6 +87,7 @@ class Checker {
   double radius_;
   TrianglePairs exempt_;
   std::optional<Clock::time_point> deadline_;
+  bool decide_blocked_ = false;
   mutable std::atomic<std::uint64_t> distance_queries_{0};
   mutable std::atomic<std::uint64_t> cap_refusals_{0};
 };

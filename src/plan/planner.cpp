@@ -138,6 +138,9 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
     start_distance = check.clearance(start, margin + 0.05 * size);
   }
 
+  // From here on the search only asks whether a blocked pose is blocked (the messages above
+  // report exact distances): its queries stop at the first pair closer than the margin.
+  check.set_decide_blocked(true);
   // The search: straight moves, then the grid anchored at the search start.
   const detail::Grid grid(space, problem.start, start, margin, size);
   detail::LazyGridSearch grid_search(context, grid, start, start_distance);

@@ -181,7 +181,7 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
         // Past the free ball: the edge is certified later, if a path uses it. Its midpoint is
         // checked now (a step across a thin wall has free ends).
         const Pose mid = motion.at(0.5 * s / length);
-        if (check.clearance(mid, margin + 0.5 * s) > margin) {
+        if (check.free(mid)) {
           reached = whole;
           TreeNode node = make_node(q, dq, -1);
           node.certified = false;

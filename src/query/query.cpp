@@ -88,6 +88,7 @@ struct DistanceSearch {
   std::uint32_t pos_a = UINT32_MAX, pos_b = UINT32_MAX;  ///< the witness's positions in the trees
   double pruned_enough = kInf;  ///< smallest bound of a pair dropped because it reached `enough`
   bool stop_at_first = false;   ///< tolerance queries: stop at the first pair below `best`
+  double stop_below = -kInf;    ///< stop once the answer so far is below this (DistanceRequest::stop_below)
   QueryStats stats;
 
   /// The bound at which a pair cannot improve the answer (PQP's error semantics), kept up to
@@ -208,7 +209,7 @@ struct DistanceSearch {
       if (best_first) std::push_heap(waiting.begin(), waiting.end(), later);
     };
     while (diving || !waiting.empty()) {
-      if (stop_at_first && have_witness) return;
+      if (have_witness && (stop_at_first || best < stop_below)) return;
       detail::PairEntry e = next;
       if (!diving) {
         if (best_first && ++dives > kBestFirstDives) {
@@ -313,7 +314,8 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   // the models are apart (most node pairs are rejected near the root); skipping it after a
   // hint that is not a contact made queries along motions into contact 2.4x slower.
   // (Not with pairs left out: the first contact may be one of them.)
-  const bool contact_first = !(request.exclude || request.exclude_if);
+  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > -kInf);
+  warm.stop_below = cold.stop_below = request.stop_below;
   std::int32_t ci = -1, cj = -1;
   const CollideResult contact = contact_first ? collide_relative(a, b, rel, {}, &ci, &cj) : CollideResult{};
   warm.stats.bv_tests += contact.stats.bv_tests;
@@ -343,6 +345,9 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   out.stats = s.stats;
   if (s.pruned_enough < s.best) {
     out.distance = s.pruned_enough;  // a lower bound ≥ enough
+    out.exact = false;
+  } else if (s.have_witness && s.best < request.stop_below) {
+    out.distance = s.best;  // a pair below stop_below: an upper bound
     out.exact = false;
   } else {
     out.distance = s.best;

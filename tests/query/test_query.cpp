@@ -180,6 +180,26 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         }
       }
 
+      // Stop below: a pair under the threshold ends the search (an upper bound under it, never
+      // below the true distance, with its witnesses); a distance at or above it is exact. With
+      // `enough` beside it, as the planner asks.
+      for (const double below : {0.5 * bd.distance, 1.5 * bd.distance + 1e-6, 1e-3}) {
+        const DistanceResult ds = distance(a, pa, b, pb, {.enough = 4.0 * below + 1.0, .stop_below = below});
+        if (bd.distance < below) {
+          EXPECT_FALSE(ds.exact);
+          EXPECT_LT(ds.distance, below);
+          EXPECT_GE(ds.distance, bd.distance * (1 - 1e-12));
+          EXPECT_NEAR((ds.point_a - ds.point_b).norm(), ds.distance, wtol);
+          EXPECT_LE(point_triangle_closest(pa.apply_inverse(ds.point_a), s.a[ds.triangle_a]).distance, wtol);
+        } else if (bd.distance < 4.0 * below + 1.0) {
+          EXPECT_TRUE(ds.exact);
+          EXPECT_NEAR(ds.distance, bd.distance, 1e-12 * bd.distance);
+        } else {
+          EXPECT_GE(ds.distance, 4.0 * below + 1.0);
+          EXPECT_LE(ds.distance, bd.distance * (1 + 1e-12));
+        }
+      }
+
       // Tolerance: either side of the true distance.
       if (bd.distance > 0) {
         const ToleranceResult in = tolerance(a, pa, b, pb, {.tolerance = bd.distance * 1.01});

@@ -78,10 +78,16 @@ struct DistanceRequest {
   /// it (only the work does, and on a tie which closest pair is reported); a hint out of range
   /// or naming a pair left out is ignored.
   DistanceHint hint{};
+  /// Early exit for callers that only need to know the distance is below this much: as soon as
+  /// a triangle pair closer than `stop_below` is found, stop; then `distance` is that pair's
+  /// distance (< stop_below, and ≥ the true distance) and `exact` is false. (The first-contact
+  /// search that otherwise starts every query is skipped: a pair below the threshold ends the
+  /// search as a contact would.)
+  double stop_below = -std::numeric_limits<double>::infinity();
 };
 struct DistanceResult {
   double distance = std::numeric_limits<double>::infinity();
-  bool exact = true;           ///< false after an early exit (see DistanceRequest::enough)
+  bool exact = true;           ///< false after an early exit (DistanceRequest::enough, ::stop_below)
   Vec3 point_a = Vec3::Zero(); ///< closest point on A (world)
   Vec3 point_b = Vec3::Zero(); ///< closest point on B (world)
   std::uint32_t triangle_a = 0;
