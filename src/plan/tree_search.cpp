@@ -23,6 +23,11 @@ double radical_inverse(std::uint64_t i, std::uint64_t base) {
 
 // Rounds in which the other tree reaches for a new node take at most this many steps.
 constexpr int kConnectSteps = 64;
+// A new node's distance is measured exactly only up to the margin + this share of the step: it
+// serves as the end bound of its edges' certificates, where a larger one saves little (the same
+// paths on the suite and the scenes at 1, 0.25 and 0.1; 0.1 against 1: house, cubicles, bug trap,
+// twisty slot and tunnel console 3-17 % less search time, 0-1.3 % more queries).
+constexpr double kNodeReach = 0.1;
 // Slides along the obstacles after a blocked step.
 constexpr int kSlides = 8;
 // Roots of a goal region's tree.
@@ -176,7 +181,7 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
     const bool whole = s >= length;
     const Pose q = whole ? target : motion.at(s / length);
     if (inside(q)) {
-      const double dq = check.clearance(q, margin + step_);
+      const double dq = check.clearance(q, margin + kNodeReach * step_);
       if (dq > margin && s > bubble) {
         // Past the free ball: the edge is certified later, if a path uses it. Its midpoint is
         // checked now (a step across a thin wall has free ends).
@@ -271,7 +276,7 @@ std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& targ
     const Mat3 rotation = exp_rotation(f * u.tail<3>() / radius) * from.pose.rotation;
     const Pose q = context_.pose_with_reference_at(rotation, from.point + move);
     if (!inside(q)) continue;
-    const double dq = check.clearance(q, margin + step_);
+    const double dq = check.clearance(q, margin + kNodeReach * step_);
     if (dq <= margin) continue;
     if (s > 0.9 * (from.distance - margin)) {  // past the free ball: certified lazily
       TreeNode node = make_node(q, dq, -1);
