@@ -27,7 +27,8 @@ struct DisassembleCliOptions {
   int jobs = 0;
   double clearance = 0.01;
   double tolerance = 0.0;
-  double plan_time = 2.0;
+  double plan_time = 60.0;
+  std::uint64_t plan_queries = 20000;
   bool no_subassemblies = false;
   ImportCliOptions import;
 };
@@ -71,6 +72,7 @@ void run(const DisassembleCliOptions& o) {
   options.tolerance = o.tolerance > 0 ? o.tolerance : 2.0 * o.import.deflection;
   options.jobs = o.jobs;
   options.plan_time_limit = o.plan_time;
+  options.plan_max_queries = o.plan_queries;
   options.subassemblies = !o.no_subassemblies;
   const DisassemblyResult r = disassemble(*assembly, options);
   const Assembly& a = *assembly;
@@ -216,7 +218,14 @@ void add_disassemble_command(CLI::App& app) {
                   "Mating tolerance: how far mated faces may overlap (tessellation sag) and the interference "
                   "threshold; default 2 x --deflection")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--plan-time", o->plan_time, "Seconds per planner attempt when no straight pull is clear (0: no planner)")
+  cmd->add_option("--plan-queries", o->plan_queries,
+                  "Distance queries per planner attempt when no straight pull is clear: the limit that ends an attempt, "
+                  "the same on every machine (0: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--plan-time", o->plan_time,
+                  "Seconds per planner attempt (0: no planner): a safety net behind --plan-queries; an attempt it ends "
+                  "could end otherwise on another machine")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("--no-subassemblies", o->no_subassemblies, "Do not try groups of touching parts");

@@ -20,6 +20,7 @@ struct PlanCliOptions {
   std::string problem;
   std::string fitter;
   double time_limit = 0.0;
+  std::uint64_t max_queries = 0;
   int threads = -1;
   std::string output;
   std::string view;
@@ -44,6 +45,7 @@ void run(const PlanCliOptions& o) {
   if (!scene) throw std::runtime_error(scene.error().message);
 
   PlanOptions options;
+  if (o.max_queries > 0) options.max_queries = o.max_queries;
   const bool tty = isatty(fileno(stderr)) && !o.quiet;
   if (tty) {
     options.progress = [](const PlanProgress& p) {
@@ -134,10 +136,14 @@ void add_plan_command(CLI::App& app) {
       "Plan a certified, deterministic 6-DOF path for the body of a problem file (our TOML, see\n"
       "docs/problem-format.md, or an OMPL.app .cfg). Every segment keeps the clearance margin along\n"
       "the whole continuous motion. Exit 0: solved; 2: no path within the limits (the message says\n"
-      "which: time, bounds or resolution); 1: bad input.");
+      "which: time, query budget, bounds or resolution); 1: bad input.");
   cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
   add_fitter_option(*cmd, o->fitter, "Override the fitter", false);
   cmd->add_option("--time-limit", o->time_limit, "Override the time limit, seconds")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-queries", o->max_queries,
+                  "Stop after this many distance queries: a limit on the work that, unlike the time limit, gives the same "
+                  "outcome on every machine and at any thread count")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--threads", o->threads, "Override the thread count (0: all cores); the same path at any count (tested: 1, 2, 4, 8)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("-o,--output", o->output, "Write the path: OMPL .path when the name ends in .path, else JSON");

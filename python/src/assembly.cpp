@@ -84,7 +84,8 @@ pyb::list names(const Assembly& a, const std::vector<std::size_t>& parts) {
 }
 
 pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<double> tolerance, int jobs,
-                         double plan_time, bool subassemblies, std::optional<std::vector<pyb::object>> fixed) {
+                         double plan_time, std::int64_t plan_queries, bool subassemblies,
+                         std::optional<std::vector<pyb::object>> fixed) {
   const Assembly& a = *pa.assembly;
   if (!(clearance >= 0) || !std::isfinite(clearance))
     throw InputError("clearance must be a finite number >= 0, not " + std::to_string(clearance));
@@ -93,12 +94,14 @@ pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<d
   if (jobs < 0) throw InputError("jobs must be >= 0 (0: all cores), not " + std::to_string(jobs));
   if (!(plan_time >= 0) || !std::isfinite(plan_time))
     throw InputError("plan_time must be a finite number of seconds >= 0, not " + std::to_string(plan_time));
+  if (plan_queries < 0) throw InputError("plan_queries must be >= 0 (0: no limit), not " + std::to_string(plan_queries));
   DisassemblyOptions options;
   options.clearance = clearance;
   // As the command line: a tolerance of 0 (or none) is twice the import's deflection.
   options.tolerance = tolerance && *tolerance > 0 ? *tolerance : 2.0 * pa.deflection;
   options.jobs = jobs;
   options.plan_time_limit = plan_time;
+  options.plan_max_queries = static_cast<std::uint64_t>(plan_queries);
   options.subassemblies = subassemblies;
   if (fixed) {
     std::set<std::size_t> chosen;
@@ -208,7 +211,7 @@ The part (by name or index) as a swept.Mesh, in the world frame at its mounted p
       });
 
   m.def("_disassemble", &disassemble_py, arg("assembly"), arg("clearance"), arg("tolerance"), arg("jobs"),
-        arg("plan_time"), arg("subassemblies"), arg("fixed"));
+        arg("plan_time"), arg("plan_queries"), arg("subassemblies"), arg("fixed"));
 }
 
 }  // namespace swept::py

@@ -40,6 +40,7 @@ const char* status_name(PlanStatus s) {
   switch (s) {
     case PlanStatus::solved: return "solved";
     case PlanStatus::no_path_time: return "no_path_time";
+    case PlanStatus::no_path_budget: return "no_path_budget";
     case PlanStatus::no_path_bounds: return "no_path_bounds";
     case PlanStatus::no_path_resolution: return "no_path_resolution";
     case PlanStatus::invalid_start: return "invalid_start";
@@ -82,13 +83,15 @@ PyBvh scene_tree(const PyScene& s, const Bvh& t) {
 }
 
 pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::optional<int> threads,
-                  std::optional<PyScene> scene_in) {
+                  std::optional<PyScene> scene_in, std::optional<std::int64_t> max_queries) {
   Problem problem = p_in.problem;
   if (time_limit) {
     if (!(*time_limit > 0) || !std::isfinite(*time_limit))
       throw InputError("time_limit must be a positive number of seconds, not " + std::to_string(*time_limit));
     problem.time_limit = *time_limit;
   }
+  if (max_queries && *max_queries <= 0)
+    throw InputError("max_queries must be a positive number of distance queries, not " + std::to_string(*max_queries));
   if (threads) {
     if (*threads < 0) throw InputError("threads must be >= 0 (0: all cores), not " + std::to_string(*threads));
     problem.threads = *threads;
@@ -104,7 +107,9 @@ pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::
   PlanResult r;
   {
     pyb::gil_scoped_release release;
-    r = plan(problem, *scene.scene, PlanOptions{});
+    PlanOptions options;
+    if (max_queries) options.max_queries = static_cast<std::uint64_t>(*max_queries);
+    r = plan(problem, *scene.scene, options);
   }
   // Bad input ends `swept plan` with exit code 1 and this message; here it is swept.Error.
   if (r.status == PlanStatus::invalid_start || r.status == PlanStatus::invalid_goal ||
@@ -225,7 +230,7 @@ different clearances or time limits: swept.plan(problem, scene=scene).)doc")
       .def_property_readonly("build_ms", [](const PyScene& s) { return s.scene->build_ms; });
 
   m.def("_plan", &plan_py, arg("problem"), arg("time_limit") = pyb::none(), arg("threads") = pyb::none(),
-        arg("scene") = pyb::none());
+        arg("scene") = pyb::none(), arg("max_queries") = pyb::none());
 }
 
 }  // namespace swept::py

@@ -92,7 +92,7 @@ class MotionResult(NamedTuple):
 
 class PlanResult(NamedTuple):
     """What swept.plan() found: the fields of `swept plan --json`, and the path as an array."""
-    status: str                 #: solved | no_path_time | no_path_bounds | no_path_resolution
+    status: str                 #: solved | no_path_time | no_path_budget | no_path_bounds | no_path_resolution
     solved: bool
     message: str
     path: np.ndarray            #: (P, 7) x, y, z, qx, qy, qz, qw of the body frame, start ... goal
@@ -207,31 +207,35 @@ def motion_clearance(a: BVH, b: BVH, poses_a: Any, poses_from: Any, poses_to: An
 
 
 def plan(problem: Problem, time_limit: Optional[float] = None, threads: Optional[int] = None, *,
-         scene: Optional[Scene] = None) -> PlanResult:
+         scene: Optional[Scene] = None, max_queries: Optional[int] = None) -> PlanResult:
     """Plans a certified path for the problem's body, as `swept plan` does.
 
     time_limit, threads: override the problem's (seconds; 0 threads: all cores; the path is the
     same at any count while the time limit is not reached). scene: a swept.Scene loaded for this
     problem file (reused: no mesh loading or tree building); default: loaded here with the
-    problem's fitter. Not finding a path is a result (solved False, status and message saying
+    problem's fitter. max_queries: stop after this many distance queries (status
+    no_path_budget): a limit on the work that, unlike time_limit, ends the same way on every
+    machine and at any thread count. Not finding a path is a result (solved False, status and message saying
     which limit); bad input (start or goal outside the bounds or in collision, bad bounds)
     raises swept.Error with `swept plan`'s message. The GIL is released while planning."""
     if not isinstance(problem, Problem):
         raise TypeError(f"problem: a swept.Problem is needed, not {type(problem).__name__}")
     if scene is not None and not isinstance(scene, Scene):
         raise TypeError(f"scene: a swept.Scene is needed, not {type(scene).__name__}")
-    return PlanResult(**_swept._plan(problem, time_limit, threads, scene))
+    return PlanResult(**_swept._plan(problem, time_limit, threads, scene, max_queries))
 
 
 def disassemble(assembly: "Assembly | str | os.PathLike", *, clearance: float = 0.01,
-                tolerance: Optional[float] = None, jobs: int = 0, plan_time: float = 2.0,
-                subassemblies: bool = True, fixed: Optional[Any] = None) -> DisassemblyResult:
+                tolerance: Optional[float] = None, jobs: int = 0, plan_time: float = 60.0,
+                plan_queries: int = 20000, subassemblies: bool = True,
+                fixed: Optional[Any] = None) -> DisassemblyResult:
     """Takes a whole assembly apart, as `swept disassemble` does (docs/assembly.md).
 
     assembly: a swept.Assembly, or a path read with Assembly.load(path) (TOML assembly file,
     folder of placed meshes, STEP / IGES / BREP with several solids). Interferences are reported
     first; then, round by round, one part (or group of touching parts) leaves by a certified
-    straight pull -- the planner when none is clear (plan_time seconds per attempt; 0: never) --
+    straight pull -- the planner when none is clear (plan_queries distance queries per attempt,
+    the same limit on every machine, 0: none; plan_time seconds, a safety net; 0: never plan) --
     and the parts that stay are reported with their blockers. clearance: every pair that is not
     a mate keeps more than this; tolerance: how far mated faces may overlap, and the interference
     threshold (default: twice the assembly's deflection). jobs: threads (0: all cores; the same
@@ -244,7 +248,7 @@ def disassemble(assembly: "Assembly | str | os.PathLike", *, clearance: float = 
         assembly = Assembly.load(assembly)
     if fixed is not None and isinstance(fixed, (str, int)):
         fixed = [fixed]
-    d = _swept._disassemble(assembly, clearance, tolerance, jobs, plan_time, subassemblies,
+    d = _swept._disassemble(assembly, clearance, tolerance, jobs, plan_time, plan_queries, subassemblies,
                             None if fixed is None else list(fixed))
     d["interferences"] = [Interference(**f) for f in d["interferences"]]
     d["sequence"] = [DisassemblyStep(**s) for s in d["sequence"]]

@@ -25,7 +25,8 @@ A study file names problems and the variants to sweep; every combination is one 
 
 A study needs at least one [[problem]] or [[assembly]]. For an assembly, `clearance` is the
 clearance of swept.disassemble (default 0.01) and `time_limit` its seconds per planner attempt
-(plan_time, default 2); `fitter` does not apply (its trees are always built with the default
+(plan_time, default 60, a safety net behind the default budget of 20,000 distance queries per
+attempt, which ends attempts the same way on every machine); `fitter` does not apply (its trees are always built with the default
 fitter), so an assembly is not repeated per fitter. Its row's `status` is `complete` or
 `incomplete`, `solved` whether every movable part came out, `order` the parts' removal order,
 `path_hash` a hash of the order and every removal path, `waypoints` the poses of all paths.
@@ -287,7 +288,7 @@ def _cached_load(cache: dict, file: str, what: str, load: Callable[[str], Any]) 
 def _run_disassembly(job: Job, row: dict) -> None:
     _, assembly, cached = _cached_load(_assemblies, job.file, "assembly", swept.Assembly.load)
     clearance = 0.01 if job.clearance is None else job.clearance
-    plan_time = 2.0 if math.isnan(job.time_limit) else job.time_limit
+    plan_time = 60.0 if math.isnan(job.time_limit) else job.time_limit
     row.update(clearance=clearance, time_limit=plan_time, scene_cached=cached)
     r = swept.disassemble(assembly, clearance=clearance, plan_time=plan_time, jobs=job.threads)
     removed = [s for s in r.sequence if s.removed]

@@ -287,7 +287,9 @@ class Sequencer {
     p.rotation = RotationMode::free;
     p.time_limit = o_.plan_time_limit;
     p.threads = 1;
-    const PlanResult r = plan(p, *scene, {.threads = 1});
+    PlanOptions options{.threads = 1};
+    if (o_.plan_max_queries > 0) options.max_queries = o_.plan_max_queries;
+    const PlanResult r = plan(p, *scene, options);
     queries_ += r.queries.distance;
     if (!r.solved()) return at;
     at.removed = true;

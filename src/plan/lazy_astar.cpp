@@ -79,6 +79,7 @@ std::optional<std::vector<GridKey>> LazyGridSearch::search_level(int level, std:
       report_progress(level);
     }
     if (expansions > budget) return std::nullopt;
+    if (context_.over_budget()) return std::nullopt;
     // The node.
     NodeInfo* node = nullptr;
     if (e.key != kGoalKey) {
@@ -169,6 +170,10 @@ std::optional<std::vector<Pose>> LazyGridSearch::run(GridOutcome& outcome, std::
     }
     if (context_.out_of_time()) {
       outcome = GridOutcome::time_limit;
+      return std::nullopt;
+    }
+    if (context_.over_budget()) {
+      outcome = GridOutcome::budget;
       return std::nullopt;
     }
     if (!exhausted) unfinished += expansions_ - before;

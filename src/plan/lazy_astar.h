@@ -34,6 +34,7 @@ struct GridEdgeHash {
 enum class GridOutcome {
   found,
   time_limit,   ///< the time limit was reached
+  budget,       ///< PlanOptions::max_queries was reached
   exhausted,    ///< every level ran out of nodes inside the bounds and rotation limits
   resolution,   ///< some level stopped at its budget, and the finest level found no path
 };

@@ -23,6 +23,9 @@ struct PlanContext {
 
   double elapsed_s() const { return std::chrono::duration<double>(Clock::now() - started).count(); }
   bool out_of_time() const { return elapsed_s() > time_limit_s; }
+  /// PlanOptions::max_queries reached? Ask only where the count is the same at any thread count
+  /// (between rounds of parallel work, never inside one).
+  bool over_budget() const { return options.max_queries && check.distance_queries() >= *options.max_queries; }
   /// The reference point of the body at `pose` (world).
   Vec3 reference_at(const Pose& pose) const { return pose.apply(space.reference); }
   /// The pose with rotation `rotation` whose reference point is at `point` (world).

@@ -178,6 +178,8 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
       r.level = kTreeLevel;
     } else if (tree_outcome == detail::TreeOutcome::time_limit) {
       outcome = detail::GridOutcome::time_limit;
+    } else if (tree_outcome == detail::TreeOutcome::budget) {
+      outcome = detail::GridOutcome::budget;
     }
     r.tree_nodes = trees.nodes();
   }
@@ -186,9 +188,13 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
   nodes_known = grid_search.nodes_known();
   if (!found) {
     PlanStatus why = outcome == detail::GridOutcome::time_limit  ? PlanStatus::no_path_time
+                     : outcome == detail::GridOutcome::budget    ? PlanStatus::no_path_budget
                      : outcome == detail::GridOutcome::exhausted ? PlanStatus::no_path_bounds
                                                                  : PlanStatus::no_path_resolution;
-    if (context.out_of_time()) why = PlanStatus::no_path_time;
+    // The budget, checked where the count is the same on every run, names the stop whenever it
+    // was reached: a run that also ran out of time says the same.
+    if (context.over_budget()) why = PlanStatus::no_path_budget;
+    else if (context.out_of_time()) why = PlanStatus::no_path_time;
     std::ostringstream os;
     if (const std::uint64_t refused = check.cap_refusals(); refused > 0) {
       // The limiting factor was the resolution of the certificate, whatever the clock says.
@@ -196,10 +202,14 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
          << " the clearance too closely to certify (more than " << kMaxCertificateQueries
          << " distance queries each; a smaller clearance or a wider passage helps)";
       if (why == PlanStatus::no_path_time) os << ", and the search then reached the time limit of " << context.time_limit_s << " s";
+      if (why == PlanStatus::no_path_budget) os << ", and the search then reached its budget of " << *options.max_queries << " distance queries";
       return fail(PlanStatus::no_path_resolution, os.str());
     }
     switch (why) {
       case PlanStatus::no_path_time: os << "no path found within the time limit of " << context.time_limit_s << " s"; break;
+      case PlanStatus::no_path_budget:
+        os << "no path found within the budget of " << *options.max_queries << " distance queries";
+        break;
       case PlanStatus::no_path_bounds:
         os << "no path exists inside the bounds and rotation limits at the grid resolutions searched (finest step "
            << grid.fine_step() << " " << problem.unit << ")";

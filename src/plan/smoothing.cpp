@@ -8,10 +8,11 @@ void smooth(PlanContext& context, std::vector<Pose>& path, std::size_t fixed) {
     std::vector<Pose> out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(fixed + 1));
     std::size_t i = fixed;
     while (i + 1 < path.size()) {
-      if (context.out_of_time()) return;
+      if (context.out_of_time() || context.over_budget()) return;
       std::size_t lo = i + 1, hi = path.size() - 1;  // lo: known reachable (an edge of the path)
       while (lo < hi) {
         const std::size_t mid = (lo + hi + 1) / 2;
+        if (context.over_budget()) break;  // keep what is known reachable
         if (context.certify(path[i], -1, path[mid], -1)) lo = mid;
         else hi = mid - 1;
       }

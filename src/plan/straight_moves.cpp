@@ -15,7 +15,7 @@ std::optional<std::vector<Pose>> straight_moves(PlanContext& context, const Pose
   // Certified when every move is; the start's known bound serves the first.
   auto certified = [&](const std::vector<Pose>& poses) {
     for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
-      if (context.out_of_time()) return false;
+      if (context.out_of_time() || context.over_budget()) return false;
       if (!context.certify(poses[i], i == 0 ? start_distance : -1, poses[i + 1], -1)) return false;
     }
     return true;
@@ -51,7 +51,7 @@ std::optional<std::vector<Pose>> straight_moves(PlanContext& context, const Pose
         const double s = shortest_move_out(context, start.rotation, mid, u2, room2);
         if (s < 0) continue;
         if (std::vector<Pose> p{start, q1, moved(mid + s * u2)}; certified(p)) return p;
-        if (context.out_of_time()) return std::nullopt;
+        if (context.out_of_time() || context.over_budget()) return std::nullopt;
       }
     }
   }

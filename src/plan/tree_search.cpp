@@ -460,6 +460,10 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
       outcome = TreeOutcome::time_limit;
       return std::nullopt;
     }
+    if (context_.over_budget()) {  // between rounds: the same count at any thread count
+      outcome = TreeOutcome::budget;
+      return std::nullopt;
+    }
     if (context_.options.progress && context_.elapsed_s() - last_progress_s >= 1.0) {
       last_progress_s = context_.elapsed_s();
       context_.options.progress({kTreeLevel, nodes(), context_.check.distance_queries(), last_progress_s});

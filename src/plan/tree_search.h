@@ -50,7 +50,7 @@ struct TreeNode {
 };
 
 /// How the tree phase ended without a path.
-enum class TreeOutcome { found, time_limit, round_limit };
+enum class TreeOutcome { found, time_limit, budget, round_limit };
 
 class TreeSearch {
  public:

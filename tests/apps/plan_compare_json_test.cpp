@@ -62,7 +62,7 @@ TEST(PlanCompareJson, RowsReadBack) {
 }
 
 TEST(PlanCompareJson, StatusWordsReadBack) {
-  for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_bounds,
+  for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_budget, PlanStatus::no_path_bounds,
                              PlanStatus::no_path_resolution, PlanStatus::invalid_start, PlanStatus::invalid_goal,
                              PlanStatus::invalid_bounds})
     EXPECT_EQ(status_named(status_name(s)), s) << status_name(s);

@@ -162,10 +162,10 @@ TEST(Sequence, RivetedPlatesAreReportedWithTheirBlockers) {
   for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(rivet.blocking[k].blockers, (std::vector<std::size_t>{0, 1})) << k;
 }
 
-TEST(Sequence, ABlockInARoomLeavesByThePlannerThroughTheWindow) {
-  // A closed room (floor, ceiling, four walls) with a window in the +x wall at z ∈ [8, 19], and
-  // a block resting on the floor: every straight pull hits a wall, the floor or the ceiling; the
-  // planner lifts it to the window and out.
+// A closed room (floor, ceiling, four walls) with a window in the +x wall at z ∈ [8, 19], and
+// a block resting on the floor: every straight pull hits a wall, the floor or the ceiling; the
+// planner lifts it to the window and out.
+Assembly block_in_a_room() {
   Assembly a;
   std::vector<Triangle> room, block;
   scenes::add_box(room, Vec3(-22, -22, -2), Vec3(22, 22, 0));   // floor
@@ -179,6 +179,11 @@ TEST(Sequence, ABlockInARoomLeavesByThePlannerThroughTheWindow) {
   scenes::add_box(room, Vec3(20, 10, 8), Vec3(22, 22, 19));
   scenes::add_box(block, Vec3(-4, -4, 0), Vec3(4, 4, 6));
   a.parts = {part("room", room, true), part("block", block)};
+  return a;
+}
+
+TEST(Sequence, ABlockInARoomLeavesByThePlannerThroughTheWindow) {
+  const Assembly a = block_in_a_room();
   const DisassemblyResult r = disassemble(a, {.clearance = 0.01, .tolerance = 0.2, .plan_time_limit = 20});
   ASSERT_TRUE(r.complete);
   ASSERT_EQ(r.sequence.size(), 1u);
@@ -210,6 +215,24 @@ TEST(Sequence, SameResultAtAnyJobCount) {
         for (std::size_t k = 0; k < s.blocking.size(); ++k) EXPECT_EQ(s.blocking[k].blockers, t.blocking[k].blockers);
       }
     }
+  }
+}
+
+// A planner attempt that finds no path ends at its query budget, not at a time: the same result,
+// the same query count, at any job count, with the time limit far away. The room's block needs
+// the planner; 20 queries are too few for it (the default budget is enough, above).
+TEST(Sequence, PlannerAttemptsEndAtTheirQueryBudgetAtAnyJobCount) {
+  const Assembly a = block_in_a_room();
+  std::vector<DisassemblyResult> runs;
+  for (int jobs : {1, 2, 4})
+    runs.push_back(disassemble(a, {.clearance = 0.01, .tolerance = 0.2, .jobs = jobs, .plan_max_queries = 200,
+                                   .plan_time_limit = 600}));
+  for (const DisassemblyResult& r : runs) {
+    EXPECT_FALSE(r.complete);
+    ASSERT_EQ(r.sequence.size(), 1u);
+    EXPECT_FALSE(r.sequence[0].removed);
+    EXPECT_EQ(r.distance_queries, runs[0].distance_queries);
+    EXPECT_GE(r.distance_queries, 20u);
   }
 }
 

@@ -158,5 +158,45 @@ TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
   }
 }
 
+// The query budget ends a search at a point that does not depend on threads or on the machine:
+// the house needs the trees and several thousand queries; stopped at 3,000 it must stop in the
+// same place at every thread count (same query count, same tree), with a time limit far away.
+// A budget it stays within changes nothing.
+TEST(Planner, BudgetEndsTheSearchTheSameWayAtAnyThreadCount) {
+  GeneratedProblem g = scenes::suite::house().problem;
+  g.problem.time_limit = 600;
+  const PlanScene s = scene_of(g);
+  const PlanResult free_run = plan(g.problem, s);
+  ASSERT_TRUE(free_run.solved()) << free_run.message;
+  ASSERT_GT(free_run.queries.distance, 6000u) << "the budget below must stop the search";
+
+  constexpr std::uint64_t kBudget = 3000;
+  std::vector<PlanResult> runs;
+  for (int threads : {1, 2, 4}) {
+    PlanOptions options;
+    options.threads = threads;
+    options.max_queries = kBudget;
+    runs.push_back(plan(g.problem, s, options));
+    const PlanResult& r = runs.back();
+    EXPECT_EQ(r.status, PlanStatus::no_path_budget) << threads << " threads: " << r.message;
+    EXPECT_NE(r.message.find("budget of 3000 distance queries"), std::string::npos) << r.message;
+    EXPECT_GE(r.queries.distance, kBudget);
+    EXPECT_TRUE(r.path.poses.empty());
+  }
+  for (const PlanResult& r : runs) {
+    EXPECT_EQ(r.queries.distance, runs[0].queries.distance);
+    EXPECT_EQ(r.tree_nodes, runs[0].tree_nodes);
+    EXPECT_EQ(r.level, runs[0].level);
+  }
+  EXPECT_GT(runs[0].tree_nodes, 2u) << "stopped in the trees, between rounds";
+
+  PlanOptions roomy;
+  roomy.max_queries = 10 * free_run.queries.distance;
+  const PlanResult within = plan(g.problem, s, roomy);
+  ASSERT_TRUE(within.solved()) << within.message;
+  EXPECT_EQ(within.path_hash, free_run.path_hash);
+  EXPECT_EQ(within.queries.distance, free_run.queries.distance);
+}
+
 }  // namespace
 }  // namespace swept

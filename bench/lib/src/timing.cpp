@@ -16,6 +16,7 @@ std::string_view status_name(PlanStatus s) {
   switch (s) {
     case PlanStatus::solved: return "solved";
     case PlanStatus::no_path_time: return "no path (time limit)";
+    case PlanStatus::no_path_budget: return "no path (query budget)";
     case PlanStatus::no_path_bounds: return "no path (bounds)";
     case PlanStatus::no_path_resolution: return "no path (resolution)";
     case PlanStatus::invalid_start: return "invalid start";
@@ -27,7 +28,7 @@ std::string_view status_name(PlanStatus s) {
 
 std::optional<PlanStatus> status_named(std::string_view name) {
   if (name == "no path (time)") return PlanStatus::no_path_time;
-  for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_bounds,
+  for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_budget, PlanStatus::no_path_bounds,
                              PlanStatus::no_path_resolution, PlanStatus::invalid_start, PlanStatus::invalid_goal,
                              PlanStatus::invalid_bounds})
     if (status_name(s) == name) return s;

@@ -29,7 +29,12 @@ struct DisassemblyOptions {
   /// (`swept disassemble` passes twice its --deflection).
   double tolerance = 0.0;
   int jobs = 0;                     ///< threads for the candidates of a round (0: all cores)
-  double plan_time_limit = 2.0;     ///< seconds per planner attempt (0: no planner fallback)
+  /// Distance queries per planner attempt: the limit that ends an attempt without a path, the
+  /// same on every machine and at any `jobs` (PlanOptions::max_queries); 0: none.
+  std::uint64_t plan_max_queries = 20000;
+  /// Seconds per planner attempt (0: no planner fallback): a safety net behind the query budget;
+  /// an attempt it ends could end otherwise on another machine.
+  double plan_time_limit = 60.0;
   bool subassemblies = true;        ///< try groups of touching parts when no single part leaves
   /// The parts never moved, by index; empty: the parts marked `fixed`, or when none is, the
   /// part with the largest bounding box (the base).

@@ -68,6 +68,13 @@ struct PlanProgress {
 /// Overrides of the problem's settings, and the progress callback.
 struct PlanOptions {
   std::optional<double> time_limit;  ///< seconds
+  /// A limit on the work that does not depend on the machine: the search stops once it has made
+  /// this many distance queries (status no_path_budget). The count is checked only where it is
+  /// the same at any thread count — before each straight move, each expansion of the grid, each round of the
+  /// trees, before each probe of the smoothing (which then keeps the path it has) — so an outcome
+  /// decided by the budget is the same everywhere, unlike one decided by the time limit. The
+  /// search may pass the budget by what one round of the trees costs. None: no limit.
+  std::optional<std::uint64_t> max_queries;
   /// Threads for the parallel work (the final certification): plan() runs in a oneTBB task
   /// arena of this many (0: all cores; default: the problem's `threads`). Nothing process-wide
   /// is changed. The path is the same at any count.
@@ -81,6 +88,7 @@ struct PlanOptions {
 enum class PlanStatus {
   solved,
   no_path_time,        ///< time limit reached
+  no_path_budget,      ///< PlanOptions::max_queries reached (the same at any thread count and on any machine)
   no_path_bounds,      ///< the search exhausted the bounds/rotation limits at every resolution
   no_path_resolution,  ///< the finest resolution was searched without a path
   invalid_start,       ///< start outside bounds or closer than the clearance (bad input)
@@ -125,7 +133,7 @@ struct PlanResult {
 
 /// Plans a certified path for the problem. Deterministic: the same problem and scene give the
 /// same path, bit for bit, at any thread count while the time limit is not reached
-/// (tested at 1, 2, 4 and 8 threads).
+/// (tested at 1, 2, 4 and 8 threads); PlanOptions::max_queries bounds the work without a clock.
 PlanResult plan(const Problem& problem, const PlanScene& scene, const PlanOptions& options = {});
 
 /// FNV-1a 64 (offset basis 14695981039346656037, prime 1099511628211) over the bytes of the
