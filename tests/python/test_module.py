@@ -260,6 +260,16 @@ def test_plan_equals_the_command_line(tmp_path, swept_cli):
     r3 = swept.plan(problem, threads=2, scene=scene)
     assert r3.path_hash == r.path_hash  # the same path at any thread count, scene loaded or given
     assert scene.obstacle_tree.stats()["triangles"] == scene.obstacle_triangles == 108
+    # a query budget: the same stop at any thread count, and as the command line says it
+    stops = [swept.plan(problem, threads=t, scene=scene, max_queries=3) for t in (1, 2)]
+    assert [s.status for s in stops] == ["no_path_budget"] * 2
+    assert stops[0].queries == stops[1].queries and stops[0].queries["distance"] >= 3
+    cli = json.loads(subprocess.run([swept_cli, "plan", path, "--json", "-q", "--max-queries", "3"],
+                                    capture_output=True, text=True).stdout)
+    assert not cli["solved"] and cli["message"] == stops[0].message and "budget of 3" in cli["message"]
+    assert swept.plan(problem, scene=scene, max_queries=10**9).path_hash == r.path_hash
+    with pytest.raises(swept.Error, match="max_queries must be a positive"):
+        swept.plan(problem, scene=scene, max_queries=0)
 
 
 # ---- errors: swept.Error with the command line's message --------------------------------------------
