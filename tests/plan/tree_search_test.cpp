@@ -227,5 +227,34 @@ TEST(TreeSearch, LazyEdgesAreCertifiedBeforeAPathUsesThem) {
   EXPECT_GT(cut[0], 0u);
 }
 
+TEST(TreeSearch, BlockedPosesDecidedOrMeasuredGiveTheSameTrees) {
+  // The planner's search stops a query at the first pair under the margin (Checker::
+  // set_decide_blocked): a blocked pose's distance is then some pair's, not the smallest. Every
+  // decision must be the one the exact distances give: the same trees, cuts and path on the
+  // house (blocked steps, slides, lazy edges cut) and in the cage, with the queries measured
+  // exactly or decided.
+  for (int problem = 0; problem < 2; ++problem) {
+    std::vector<std::uint64_t> hashes, nodes, cut, queries;
+    for (bool decide : {false, true}) {
+      PhaseRig rig(problem == 0 ? scenes::suite::house().problem : rod_in_cage(2.3, 2.0), 120.0);
+      rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
+      rig.check.set_decide_blocked(decide);
+      const Pose start = rig.problem().start;
+      detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
+      detail::TreeOutcome outcome = detail::TreeOutcome::time_limit;
+      const auto path = search.run(outcome, 200);
+      ASSERT_TRUE(path) << problem << ": " << search.nodes() << " nodes";
+      hashes.push_back(path_hash(Path{*path}));
+      nodes.push_back(search.nodes());
+      cut.push_back(search.lazy_cut());
+      queries.push_back(rig.check.distance_queries());
+    }
+    EXPECT_EQ(hashes[0], hashes[1]) << problem;
+    EXPECT_EQ(nodes[0], nodes[1]) << problem;
+    EXPECT_EQ(cut[0], cut[1]) << problem;
+    EXPECT_EQ(queries[0], queries[1]) << problem;
+  }
+}
+
 }  // namespace
 }  // namespace swept
