@@ -66,7 +66,8 @@ class Checker {
   double radius() const { return radius_; }
   /// While set, a query stops as soon as it finds a pair closer than the margin: a blocked pose
   /// is decided, not measured (its distance is then some pair's, ≤ the margin, not the
-  /// smallest), which is all the search asks of it; free poses are measured as before. Off by
+  /// smallest), which is all the search asks of it; free poses are measured as before. Only for
+  /// clearance(), free() and certify(): nearest(), below() and exact() stay exact. Off by
   /// default: `swept check` reports the exact distance where a path is blocked.
   void set_decide_blocked(bool on) { decide_blocked_ = on; }
   /// While set, certificates that run past this time give up (not clear).
@@ -78,8 +79,9 @@ class Checker {
   std::uint64_t cap_refusals() const { return cap_refusals_.load(); }
 
  private:
-  /// One counted distance query against the obstacles (relaxed: the exempt pairs left out).
-  DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}) const;
+  /// One counted distance query against the obstacles (relaxed: the exempt pairs left out;
+  /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on).
+  DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}, bool decide = true) const;
 
   const PlanScene& scene_;
   double margin_;
