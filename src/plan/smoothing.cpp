@@ -12,7 +12,7 @@ void smooth(PlanContext& context, std::vector<Pose>& path, std::size_t fixed) {
       std::size_t lo = i + 1, hi = path.size() - 1;  // lo: known reachable (an edge of the path)
       while (lo < hi) {
         const std::size_t mid = (lo + hi + 1) / 2;
-        if (context.over_budget()) break;  // keep what is known reachable
+        if (context.over_budget()) return;  // the path as it was: every segment certified
         if (context.certify(path[i], -1, path[mid], -1)) lo = mid;
         else hi = mid - 1;
       }
