@@ -132,6 +132,9 @@ Result<std::vector<AssemblyPart>> parts_of(const fs::path& file, const std::stri
     p.mesh.name = p.name;
     p.mesh.triangles.reserve(soup.triangles.size());
     for (const Triangle& t : soup.triangles) p.mesh.triangles.push_back(placed(t, pose));
+    p.mesh.cylinder_of = std::move(soup.cylinder_of);
+    for (const CadCylinder& c : soup.cylinders)
+      p.mesh.cylinders.push_back({pose.apply(c.origin), (pose.rotation * c.axis).normalized(), c.radius, c.deviation});
     out.push_back(std::move(p));
   }
   return out;
@@ -257,6 +260,17 @@ Result<Assembly> read_assembly(const fs::path& path, const AssemblyReadOptions& 
   Assembly& a = *got;
   if (a.parts.empty()) return Error{path.string() + ": the assembly is empty (no parts)"};
   std::map<std::string, std::size_t> seen;
+  for (AssemblyPart& part : a.parts) {
+    // The CAD's cylinders only add mates (contact.h): where they are not what the contact model
+    // can trust (a count that does not match, a degenerate surface), the part goes without them.
+    TriangleSoup& m = part.mesh;
+    bool usable = m.cylinder_of.size() == m.triangles.size();
+    for (const CadCylinder& c : m.cylinders)
+      usable = usable && c.origin.allFinite() && c.axis.allFinite() && std::abs(c.axis.norm() - 1.0) < 1e-9 &&
+               std::isfinite(c.radius) && c.radius > 0.0 && std::isfinite(c.deviation) && c.deviation >= 0.0;
+    for (std::int32_t k : m.cylinder_of) usable = usable && k >= -1 && k < static_cast<std::int32_t>(m.cylinders.size());
+    if (!usable) m.cylinder_of.clear(), m.cylinders.clear();
+  }
   for (std::size_t i = 0; i < a.parts.size(); ++i) {
     const AssemblyPart& p = a.parts[i];
     if (p.mesh.triangles.empty()) return Error{path.string() + ": part '" + p.name + "' (" + p.source + ") has no triangles"};

@@ -45,7 +45,10 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_WorkSession.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Cylinder.hxx>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -56,6 +59,7 @@
 #include <numbers>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace swept::io_detail {
@@ -225,6 +229,70 @@ void brep_instances(const TopoDS_Shape& shape, const std::string& stem, std::vec
   if (solids == 1 && !any) out.back().name = stem;
 }
 
+// The cylinder a face lies on, in the frame of the face's location: an analytic cylinder, or a
+// free-form face (B-spline, Bezier, ...: STEP files from many systems write every curved face so)
+// that is one within `tolerance`, found from 17 × 17 samples of the face's parameter box: the
+// axis is the direction the normals are perpendicular to (to 1e-7), the centre the point their
+// lines pass nearest, the radius the samples' mean distance; `deviation` is the samples' largest
+// distance from that radius (an estimate: the face is not examined between the samples).
+std::optional<gp_Cylinder> cylinder_of(const TopoDS_Face& face, double tolerance, double& deviation) {
+  const BRepAdaptor_Surface surface(face);
+  deviation = 0.0;
+  switch (surface.GetType()) {
+    case GeomAbs_Cylinder:
+      return surface.Cylinder();
+    case GeomAbs_Plane:
+    case GeomAbs_Cone:
+    case GeomAbs_Sphere:
+    case GeomAbs_Torus:
+      return std::nullopt;
+    default:
+      break;
+  }
+  constexpr int kSteps = 16;
+  std::vector<Eigen::Vector3d> points, normals;
+  const double u0 = surface.FirstUParameter(), u1 = surface.LastUParameter();
+  const double v0 = surface.FirstVParameter(), v1 = surface.LastVParameter();
+  if (!std::isfinite(u0) || !std::isfinite(u1) || !std::isfinite(v0) || !std::isfinite(v1)) return std::nullopt;
+  for (int i = 0; i <= kSteps; ++i)
+    for (int j = 0; j <= kSteps; ++j) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      surface.D1(u0 + (u1 - u0) * i / kSteps, v0 + (v1 - v0) * j / kSteps, p, du, dv);
+      const gp_Vec n = du.Crossed(dv);
+      if (!(n.Magnitude() > 1e-12 * (1.0 + du.Magnitude() * dv.Magnitude()))) continue;  // a pole
+      points.emplace_back(p.X(), p.Y(), p.Z());
+      normals.emplace_back(Eigen::Vector3d(n.X(), n.Y(), n.Z()).normalized());
+    }
+  if (points.size() < 16) return std::nullopt;
+  Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& n : normals) moment += n * n.transpose();
+  const Eigen::Vector3d axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(moment).eigenvectors().col(0);
+  for (const Eigen::Vector3d& n : normals)
+    if (!(std::abs(n.dot(axis)) <= 1e-7)) return std::nullopt;
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector2d q(points[k].dot(e1), points[k].dot(e2));
+    const Eigen::Vector2d m = Eigen::Vector2d(normals[k].dot(e1), normals[k].dot(e2)).normalized();
+    const Eigen::Matrix2d across = Eigen::Matrix2d::Identity() - m * m.transpose();
+    a += across;
+    b += across * q;
+  }
+  // Normals of one direction only (a plane in disguise) leave the centre undetermined.
+  if (!(std::abs(a.determinant()) > 1e-6 * a.squaredNorm())) return std::nullopt;
+  const Eigen::Vector2d c = a.ldlt().solve(b);
+  double radius = 0.0;
+  for (const Eigen::Vector3d& p : points) radius += (Eigen::Vector2d(p.dot(e1), p.dot(e2)) - c).norm();
+  radius /= static_cast<double>(points.size());
+  for (const Eigen::Vector3d& p : points)
+    deviation = std::max(deviation, std::abs((Eigen::Vector2d(p.dot(e1), p.dot(e2)) - c).norm() - radius));
+  if (!(radius > 0.0) || !(deviation <= tolerance)) return std::nullopt;
+  const Eigen::Vector3d o = c.x() * e1 + c.y() * e2;
+  return gp_Cylinder(gp_Ax3(gp_Pnt(o.x(), o.y(), o.z()), gp_Dir(axis.x(), axis.y(), axis.z())), radius);
+}
+
 }  // namespace
 
 Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& parts) {
@@ -326,6 +394,17 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
         if (total > opt.max_triangles)
           return file_error(ctx.display, "the tessellation at " + deflection_text(opt) + " has more than " + std::to_string(opt.max_triangles) +
                                              " triangles, over " + budget_advice(opt));
+        // A cylindrical face keeps its surface (the contact model of assemblies slides mated
+        // cylinders by it): the axis and radius in the same frame and unit as the triangles.
+        std::int32_t cylinder = -1;
+        double deviation = 0.0;
+        if (const std::optional<gp_Cylinder> c = cylinder_of(face, 0.1 * params.Deflection, deviation)) {
+          const gp_Pnt o = c->Axis().Location();
+          const gp_Dir d = c->Axis().Direction();
+          cylinder = static_cast<std::int32_t>(soup.cylinders.size());
+          soup.cylinders.push_back({output_per_shape_unit * Vec3(o.X(), o.Y(), o.Z()), Vec3(d.X(), d.Y(), d.Z()),
+                                    output_per_shape_unit * c->Radius(), output_per_shape_unit * deviation});
+        }
         const gp_Trsf trsf = loc.Transformation();
         const bool reversed = face.Orientation() == TopAbs_REVERSED;
         for (int i = 1; i <= tri->NbTriangles(); ++i) {
@@ -338,6 +417,7 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
             t[v] = output_per_shape_unit * Vec3(p.X(), p.Y(), p.Z());
           }
           soup.triangles.push_back(t);
+          soup.cylinder_of.push_back(cylinder);
         }
       }
       parts.push_back(std::move(soup));

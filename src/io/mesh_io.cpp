@@ -171,6 +171,15 @@ Result<bool> read_isolated(io_detail::ReadContext& ctx, Reader reader, std::vect
       w.u64(part.triangles.size());
       for (const Triangle& t : part.triangles)
         for (int k = 0; k < 3; ++k) w.put(t[k].data(), 3 * sizeof(double));
+      w.u64(part.cylinder_of.size());
+      if (!part.cylinder_of.empty()) w.put(part.cylinder_of.data(), part.cylinder_of.size() * sizeof(std::int32_t));
+      w.u64(part.cylinders.size());
+      for (const CadCylinder& c : part.cylinders) {
+        w.put(c.origin.data(), 3 * sizeof(double));
+        w.put(c.axis.data(), 3 * sizeof(double));
+        w.put(&c.radius, sizeof(double));
+        w.put(&c.deviation, sizeof(double));
+      }
     }
     w.u64(warnings.size());
     for (const std::string& s : warnings) w.str(s);
@@ -189,6 +198,19 @@ Result<bool> read_isolated(io_detail::ReadContext& ctx, Reader reader, std::vect
     for (Triangle& t : part.triangles)
       for (int k = 0; k < 3; ++k)
         if (!r.get(t[k].data(), 3 * sizeof(double))) return cut;
+    std::uint64_t faces = 0;
+    if (!r.u64(faces) || (faces != 0 && faces != n)) return cut;
+    part.cylinder_of.resize(faces);
+    if ((faces != 0 && !r.get(part.cylinder_of.data(), faces * sizeof(std::int32_t))) || !r.u64(faces) ||
+        faces > bytes->size() / (8 * sizeof(double)))
+      return cut;
+    part.cylinders.resize(faces);
+    for (CadCylinder& c : part.cylinders)
+      if (!r.get(c.origin.data(), 3 * sizeof(double)) || !r.get(c.axis.data(), 3 * sizeof(double)) ||
+          !r.get(&c.radius, sizeof(double)) || !r.get(&c.deviation, sizeof(double)))
+        return cut;
+    for (std::int32_t k : part.cylinder_of)
+      if (k < -1 || k >= static_cast<std::int64_t>(part.cylinders.size())) return cut;
     parts.push_back(std::move(part));
   }
   if (!r.u64(count)) return cut;

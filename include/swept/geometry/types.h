@@ -41,10 +41,26 @@ double shape_quality(const Triangle& t);
 /// Aspect ratio: longest edge over the triangle's smallest height (∞ for zero area).
 double aspect_ratio(const Triangle& t);
 
+/// A cylindrical B-rep face, as the CAD reader (OpenCASCADE) gives it: the surface its triangles
+/// approximate. The contact model of assemblies slides mated cylinders along their axis by the
+/// surfaces, not by their facets (docs/planner.md, "Assemblies: the contact model").
+struct CadCylinder {
+  Vec3 origin = Vec3::Zero();  ///< a point of the axis, in the soup's frame and unit
+  Vec3 axis = Vec3::UnitZ();   ///< unit direction of the axis (either sign)
+  double radius = 0.0;
+  /// How far the face may lie from this cylinder: 0 for an analytic cylinder; for a free-form
+  /// (B-spline) face the reader fitted it to, the largest distance of its samples from it.
+  double deviation = 0.0;
+};
+
 /// A triangle soup: triangles in one frame, no connectivity required. One soup per part.
 struct TriangleSoup {
   std::string name;                 ///< part name (from the file, or the file's stem)
   std::vector<Triangle> triangles;  ///< in the part's frame, in the model's length unit
+  /// CAD parts only (empty for meshes): per triangle, the index into `cylinders` of the
+  /// cylindrical face it lies on, or −1 (another kind of face).
+  std::vector<std::int32_t> cylinder_of;
+  std::vector<CadCylinder> cylinders;  ///< the part's cylindrical faces, one per B-rep face
 };
 
 /// Axis-aligned bounding box.
