@@ -3,6 +3,7 @@
 #include "swept/scenes/scene_model.h"
 #include "swept/scenes/scenes.h"
 #include "swept/scenes/gearbox.h"
+#include "swept/scenes/pin_in_bore.h"
 #include "swept/scenes/planning_suite.h"
 #include "swept/scenes/problem_toml.h"
 #include "swept/io/file_write.h"
@@ -156,6 +157,7 @@ SceneModel build(const std::string& name) {
 Result<SceneReport> generate_scene(const GenerateRequest& request) {
   // Not a planning problem of the paper's catalogue but an assembly (gearbox.h).
   if (request.name == "gearbox") return generate_gearbox(request);
+  if (request.name == "pin-in-bore") return generate_pin_in_bore(request);
   const auto t0 = std::chrono::steady_clock::now();
   const auto& cat = catalog();
   const auto info = std::find_if(cat.begin(), cat.end(), [&](const SceneInfo& s) { return s.name == request.name; });
@@ -167,7 +169,8 @@ Result<SceneReport> generate_scene(const GenerateRequest& request) {
                    "write_suite_problem(suite_problem(name), dir), as `swept scene` does"};
     std::string suite;
     for (const SuiteInfo& s : suite_catalog()) suite.append(suite.empty() ? "" : ", ").append(s.name);
-    return Error{"unknown scene '" + request.name + "' (known: " + names + "; planner benchmark problems: " + suite + ")"};
+    return Error{"unknown scene '" + request.name + "' (known: " + names + "; planner benchmark problems: " + suite +
+                 "; assemblies: gearbox, pin-in-bore)"};
   }
   std::error_code ec;
   std::filesystem::create_directories(request.output_dir, ec);

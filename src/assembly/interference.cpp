@@ -31,11 +31,16 @@ std::vector<Interference> find_interferences(const Assembly& assembly, double to
     const CollideResult c = collide(a.tree, Pose{}, b.tree, Pose{}, {.all_contacts = true});
     Interference f{i, j};
     Aabb where;
+    // A shaft in its bore: the CAD's cylinders, not their facets, tell whether they cross.
+    const auto cylinders = assembly_detail::cylinder_mates(a, b, Vec3::UnitZ(), 0.0, tolerance);
     for (const ContactPair& p : c.contacts) {
       const Triangle& ta = a.triangles[p.triangle_a];
       const Triangle& tb = b.triangles[p.triangle_b];
       const double overlap = pair_overlap(ta, a.planes[p.triangle_a], tb, b.planes[p.triangle_b]);
       if (!(overlap > tolerance) || !std::isfinite(overlap)) continue;  // degenerate pairs have no depth
+      if (!cylinders.empty() &&
+          assembly_detail::cylinder_mate_allows(cylinders, a, p.triangle_a, b, p.triangle_b, tolerance))
+        continue;
       ++f.triangle_pairs;
       f.depth = std::max(f.depth, overlap);
       const TriangleDistance d = triangle_distance(ta, tb);

@@ -5,6 +5,7 @@
 #include "swept/assembly/disassemble.h"
 #include "swept/query/query.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -22,6 +23,20 @@ struct FlatNode {
   double lo = 0.0, hi = 0.0;
 };
 
+/// A cylindrical CAD face of a body (TriangleSoup::cylinders), with what the mate rule's case 4
+/// needs of it (contact.h).
+struct BodyCylinder {
+  CadCylinder surface;
+  /// Which side the solid is on, from its triangles' outward normals: inside the cylinder (a
+  /// shaft) or outside (a bore). `known` false when the normals do not tell (the face is then
+  /// left to the triangle rules).
+  bool known = false;
+  bool material_inside = false;
+  /// The face's boundary edges (an edge of exactly one of its triangles), each as its two
+  /// vertices' coordinates in increasing order, sorted: the chords of its rims.
+  std::vector<std::array<double, 6>> boundary;
+};
+
 /// A rigid body of the sequence: one part or a subassembly, world frame at the mounted pose.
 struct Body {
   std::vector<Triangle> triangles;     ///< input order (ids of the tree)
@@ -29,7 +44,37 @@ struct Body {
   Bvh tree;
   std::vector<FlatNode> flat;          ///< per node of `tree`
   Aabb box;
+  /// CAD parts: per triangle the index into `cylinders` of the cylindrical face it lies on, or −1;
+  /// empty when none of the body's parts has CAD faces.
+  std::vector<std::int32_t> cylinder_of;
+  std::vector<BodyCylinder> cylinders;
 };
+
+/// A coaxial cylinder mate of a moving body with an obstacle for one pull (contact.h, case 4):
+/// the axis of the face with the solid outside it (the bore), whose body is `outer`.
+struct CylinderMate {
+  Vec3 origin = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  bool moving_is_outer = false;  ///< the moving body holds the bore (a sleeve or a nut on a fixed shaft)
+  double drift = 0.0;            ///< length · |d × axis|: how far the pull moves a point off its radius
+};
+
+/// The cylinder mates of `moving` with `obstacle` for a pull of `length` along the unit `direction`:
+/// a shaft face and a bore face, one in each body, with parallel axes (|a × b| ≤ 1e-9), the
+/// shaft's axis within `tolerance` of the bore's, the shaft's radius at most the bore's +
+/// `tolerance`, and drift ≤ `tolerance`. One per bore face, in face order; none for meshes.
+std::vector<CylinderMate> cylinder_mates(const Body& obstacle, const Body& moving, const Vec3& direction,
+                                         double length, double tolerance);
+
+/// Case 4 of the mate rule (contact.h) for obstacle triangle `a` and moving triangle `b`: under
+/// one of `mates`, the inner triangle's largest distance from the axis exceeds the outer
+/// triangle's smallest (taken at the CAD surface where it lies on a coaxial bore or at its rim)
+/// by at most `tolerance` − drift.
+bool cylinder_mate_allows(const std::vector<CylinderMate>& mates, const Body& obstacle, std::uint32_t a,
+                          const Body& moving, std::uint32_t b, double tolerance);
+
+/// The CAD cylinders of the given parts (merged in the given order) into `body`.
+void add_cylinders(Body& body, const Assembly& assembly, const std::vector<std::size_t>& parts);
 
 /// Does the mate rule hold for every triangle pair under node `ia` of `obstacle` and node `ib` of
 /// `moving`, by its first case along a flat node's normal (a face sliding along or leaving a

@@ -136,6 +136,7 @@ Body make_body(const Assembly& assembly, const std::vector<std::size_t>& parts, 
   SWEPT_ASSERT(tree.ok(), "read_assembly refuses empty parts and non-finite coordinates");
   b.tree = std::move(*tree);
   b.flat = flat_nodes(b.tree, b.planes);
+  add_cylinders(b, assembly, parts);
   return b;
 }
 
@@ -203,6 +204,19 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
   std::stable_sort(normals.begin(), normals.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
   if (normals.size() > 8) normals.resize(8);
   for (const auto& [n, a] : normals) add_unique(out, n);
+  // The axes of the CAD's cylinder mates with the obstacles it touches (exact, where the cross
+  // products below only approximate a tessellated cylinder's axis), both signs, at most 8.
+  std::size_t mate_axes = 0;
+  for (const Body* o : obstacles) {
+    if (box_gap(o->box, moving.box) > threshold) continue;
+    for (const CylinderMate& m : cylinder_mates(*o, moving, Vec3::UnitZ(), 0.0, threshold)) {
+      if (mate_axes == 8) break;
+      const std::size_t before = out.size();
+      add_unique(out, m.axis);
+      add_unique(out, -m.axis);
+      if (out.size() > before) ++mate_axes;
+    }
+  }
   std::size_t axes = 0;
   for (std::size_t i = 0; i < normals.size() && axes < 8; ++i)
     for (std::size_t j = i + 1; j < normals.size() && axes < 8; ++j) {
@@ -227,8 +241,10 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
   const double tol = settings.tolerance;
   for (const Body* o : obstacles) {
     if (box_gap(o->box, swept) > reach) continue;
+    const std::vector<CylinderMate> cylinders = cylinder_mates(*o, moving, d, length, tol);
     const std::function<bool(std::uint32_t, std::uint32_t)> mates = [&](std::uint32_t a, std::uint32_t b) {
-      return mate_allows(o->triangles[a], o->planes[a], moving.triangles[b], moving.planes[b], d, length, tol);
+      return mate_allows(o->triangles[a], o->planes[a], moving.triangles[b], moving.planes[b], d, length, tol) ||
+             (!cylinders.empty() && cylinder_mate_allows(cylinders, *o, a, moving, b, tol));
     };
     const std::function<bool(std::int32_t, std::int32_t)> node_mates = [&](std::int32_t a, std::int32_t b) {
       return nodes_mate(*o, a, moving, b, d, length, tol);

@@ -3,8 +3,9 @@
 ///
 /// Parts touch where they mate: planar faces face to face, a shaft in a bore of the same radius,
 /// tessellations of two mating surfaces that overlap by up to the meshing deflection. The model
-/// decides pair of triangles by pair of triangles, from the triangles alone (every input is a
-/// mesh by the time it is planned; CAD triangles carry their B-rep face's orientation, outward).
+/// decides pair of triangles by pair of triangles, from the triangles (CAD triangles carry their
+/// B-rep face's orientation, outward) and, for CAD parts, the cylinders they lie on (case 4;
+/// src/assembly/cylinders.cpp). A mesh-only input gets cases 1–3: what its triangles support.
 /// A pair (o, p) of a fixed triangle o and a triangle p of the moving part is a *mate* for a
 /// straight pull of length L along the unit direction d when one of these holds:
 ///
@@ -22,8 +23,24 @@
 ///    advances over the pull (L·max(0, n·d)).
 /// 3. **Missing.** The column p sweeps along d (|n_p·d| ≥ 0.05), shrunk by τ on every side, does
 ///    not meet o: the end of a shaft coming out of its bore past the rim of the face round it.
+/// 4. **A shaft in its bore, by the CAD's cylinders** (parts read from STEP, IGES or BREP, whose
+///    triangles know their cylindrical B-rep face — analytic, or a B-spline the reader fits a
+///    cylinder to, with its deviation: TriangleSoup::cylinders). The moving part and
+///    the other hold a shaft face and a bore face (which side the solid is on, from the face's
+///    outward normals) with parallel axes (|a × b| ≤ 1e-6; how far the angle moves a triangle
+///    off the mate's axis is measured), the shaft's axis within τ of the bore's and its radius at
+///    most the bore's + τ; the pull runs along the bore's axis (drift L·|d × a| ≤ τ).
+///    A translation along the axis keeps every point's distance ρ from it, so the pair is a mate
+///    when the inner triangle's largest ρ (at a vertex) exceeds the outer triangle's smallest by
+///    at most τ − drift, where a triangle on a bore coaxial with the mate counts at its surface
+///    (the bore's radius less its deviation, not the facet's middle, which lies inside the circle
+///    by the sag), and a triangle at such a bore's rim (an edge of it is a boundary edge of the
+///    bore's triangles, and it comes nearest the axis on such an edge) at the smaller of the
+///    radius and its other edges' distance: what lies nearer is the rim's sag between that chord
+///    and the cylinder.
 ///
-/// So no mate reaches more than τ into the other along the whole pull. A mate slides along its
+/// So no mate reaches more than τ into the other along the whole pull (case 4: by the CAD's
+/// surfaces, where the facets of two tessellations of one circle cross by their sag). A mate slides along its
 /// plane (a nut along its bolt, a shaft along its bore, whose tessellations of one circle cross
 /// by less than their sag) or separates from it (a cover lifted off its housing); it never
 /// presses (m·d < 0 over more than τ). Contact normals thus bound the directions a part can
