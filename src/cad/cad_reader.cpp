@@ -398,7 +398,14 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
         // cylinders by it): the axis and radius in the same frame and unit as the triangles.
         std::int32_t cylinder = -1;
         double deviation = 0.0;
-        if (const std::optional<gp_Cylinder> c = cylinder_of(face, 0.1 * params.Deflection, deviation)) {
+        // A face whose surface cannot be evaluated is no cylinder (its triangles still count).
+        std::optional<gp_Cylinder> c;
+        try {
+          c = cylinder_of(face, 0.1 * params.Deflection, deviation);
+        } catch (const Standard_Failure&) {
+          c.reset();
+        }
+        if (c) {
           const gp_Pnt o = c->Axis().Location();
           const gp_Dir d = c->Axis().Direction();
           cylinder = static_cast<std::int32_t>(soup.cylinders.size());

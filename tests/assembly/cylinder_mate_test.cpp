@@ -102,6 +102,28 @@ TEST(CylinderMate, ReaderKeepsTheCylindersInTheAssemblysFrame) {
   }
 }
 
+TEST(CylinderMate, TheCylindersCrossTheReadersIsolationUnchanged) {
+  const Assembly a = read_pin_in_bore();
+  const auto file = a.source.parent_path() / "pin.brep";
+  ImportOptions isolated, in_process;
+  in_process.isolate_readers = false;
+  const auto x = import_mesh(file, isolated), y = import_mesh(file, in_process);
+  ASSERT_TRUE(x.ok()) << x.error().message;
+  ASSERT_TRUE(y.ok()) << y.error().message;
+  ASSERT_EQ(x->parts.size(), 1u);
+  ASSERT_EQ(y->parts.size(), 1u);
+  EXPECT_EQ(x->parts[0].cylinder_of, y->parts[0].cylinder_of);
+  ASSERT_EQ(x->parts[0].cylinders.size(), y->parts[0].cylinders.size());
+  ASSERT_FALSE(x->parts[0].cylinders.empty());
+  for (std::size_t k = 0; k < x->parts[0].cylinders.size(); ++k) {
+    const CadCylinder &c = x->parts[0].cylinders[k], &d = y->parts[0].cylinders[k];
+    EXPECT_EQ(c.origin, d.origin);
+    EXPECT_EQ(c.axis, d.axis);
+    EXPECT_EQ(c.radius, d.radius);
+    EXPECT_EQ(c.deviation, d.deviation);
+  }
+}
+
 TEST(CylinderMate, ThePinSlidesOutAlongItsAxisByTheCylinders) {
   const Assembly a = read_pin_in_bore();
   ASSERT_EQ(a.parts.size(), 2u);
