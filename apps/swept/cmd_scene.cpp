@@ -137,7 +137,9 @@ void add_scene_command(CLI::App& app) {
       "under 30,000 triangles. `swept scene --list` describes the scenes.\n"
       "Also the planner benchmark problems (issue 13): twisty-slot, bug-trap, hooks-1.5, hooks-1.2,\n"
       "hooks-1.1, house, cubicles, spiral-tube; each written as meshes, problem.toml, an OMPL.app\n"
-      "NAME.cfg (the same problem) and witness.json (a path free by construction).");
+      "NAME.cfg (the same problem) and witness.json (a path free by construction).\n"
+      "And two assemblies for `swept disassemble`, each with an assembly.toml: gearbox (STL parts)\n"
+      "and pin-in-bore (OpenCASCADE .brep parts, whose cylinders the contact model uses).");
   cmd->add_option("name", o->name, "Scene name (see --list)");
   cmd->add_option("--scale", o->scale, "test | paper")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "Output directory (created if missing)");
