@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <optional>
 #include <set>
 
 namespace swept {
@@ -20,8 +21,10 @@ std::vector<std::string> names(const Assembly& a, const std::vector<std::size_t>
   return out;
 }
 
-// Every removal by a straight pull, checked against the parts still in place at its round.
-void check_pulls_independently(const Assembly& a, const DisassemblyResult& r, double clearance, int samples) {
+// Every removal by a straight pull, checked against the parts still in place at its round (with
+// the mate rule's cases 1–3 at `tolerance`, by default the one the sequence used).
+void check_pulls_independently(const Assembly& a, const DisassemblyResult& r, double clearance, int samples,
+                               std::optional<double> tolerance = std::nullopt) {
   std::set<std::size_t> gone;
   for (const SequenceStep& s : r.sequence) {
     if (!s.removed) break;
@@ -29,7 +32,9 @@ void check_pulls_independently(const Assembly& a, const DisassemblyResult& r, do
     for (std::size_t i = 0; i < a.parts.size(); ++i)
       if (!gone.count(i) && std::find(s.parts.begin(), s.parts.end(), i) == s.parts.end()) staying.push_back(i);
     if (s.method == RemovalMethod::pull)
-      EXPECT_EQ(pull_violations(a, s.parts, staying, s.direction, s.distance, clearance, r.tolerance, samples), 0)
+      EXPECT_EQ(pull_violations(a, s.parts, staying, s.direction, s.distance, clearance, tolerance.value_or(r.tolerance),
+                                samples),
+                0)
           << "the pull of " << names(a, s.parts)[0] << " passes through material";
     gone.insert(s.parts.begin(), s.parts.end());
   }
@@ -236,11 +241,19 @@ TEST(Sequence, PlannerAttemptsEndAtTheirQueryBudgetAtAnyJobCount) {
   }
 }
 
-TEST(Sequence, As1ComesApartCompletely) {
+// The shared as1 STEP, or empty with why not.
+std::filesystem::path as1_file(std::string& why) {
   const auto data = shared_data();
-  if (!data) GTEST_SKIP() << "../shared/data is absent: as1 not taken apart";
+  if (!data) return why = "../shared/data is absent: as1 not taken apart", std::filesystem::path();
   const auto file = *data / "as1" / "as1-oc-214.stp";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  if (!std::filesystem::exists(file)) return why = file.string() + " not found", std::filesystem::path();
+  return file;
+}
+
+TEST(Sequence, As1ComesApartCompletely) {
+  std::string why;
+  const auto file = as1_file(why);
+  if (file.empty()) GTEST_SKIP() << why;
   const auto a = read_assembly(file);
   ASSERT_TRUE(a.ok()) << a.error().message;
   ASSERT_GE(a->parts.size(), 10u);
@@ -268,10 +281,9 @@ TEST(Sequence, As1ComesApartCompletely) {
 // cylinders the reader recognizes in those B-splines it comes apart as at 0.2 mm, and no pull goes
 // deeper into material than the triangle rules allow at 0.2 mm (the independent check).
 TEST(Sequence, As1ComesApartAtATightToleranceByItsCylinders) {
-  const auto data = shared_data();
-  if (!data) GTEST_SKIP() << "../shared/data is absent: as1 not taken apart";
-  const auto file = *data / "as1" / "as1-oc-214.stp";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  std::string why;
+  const auto file = as1_file(why);
+  if (file.empty()) GTEST_SKIP() << why;
   const auto a = read_assembly(file);
   ASSERT_TRUE(a.ok()) << a.error().message;
   std::size_t cylinders = 0;
@@ -293,15 +305,7 @@ TEST(Sequence, As1ComesApartAtATightToleranceByItsCylinders) {
   ASSERT_GE(order.size(), 3u);
   // The rod's nuts first, then the rod (it holds the brackets), as at 0.2 mm.
   EXPECT_EQ(std::vector<std::string>(order.begin(), order.begin() + 3), (std::vector<std::string>{"nut", "nut#2", "rod"}));
-  std::set<std::size_t> gone;
-  for (const SequenceStep& step : r.sequence) {
-    std::vector<std::size_t> staying;
-    for (std::size_t i = 0; i < a->parts.size(); ++i)
-      if (!gone.count(i) && i != step.parts[0]) staying.push_back(i);
-    EXPECT_EQ(pull_violations(*a, step.parts, staying, step.direction, step.distance, 0.01, 0.2, 8), 0)
-        << a->parts[step.parts[0]].name;
-    gone.insert(step.parts[0]);
-  }
+  check_pulls_independently(*a, r, 0.01, 8, 0.2);
 }
 
 }  // namespace
