@@ -70,6 +70,12 @@ inline AssemblyPart part(std::string name, std::vector<Triangle> triangles, bool
 /// A base plate, a ring (r 3, R 10, 16 segments) standing on it, and a bolt through the ring:
 /// a 24-gon shaft of the bore's radius on the base, with a head (radius 5) resting on the ring's
 /// top. Known answer: the bolt up (+z), then the ring up; the base stays (it is the largest).
+/// The same parts as meshes only: their triangles without the CAD's cylinders (contact.h, case 4).
+inline Assembly without_cylinders(Assembly a) {
+  for (AssemblyPart& p : a.parts) p.mesh.cylinder_of.clear(), p.mesh.cylinders.clear();
+  return a;
+}
+
 inline Assembly bolted_ring() {
   Assembly a;
   a.source = "bolted_ring";

@@ -130,13 +130,7 @@ TEST(CylinderMate, ThePinSlidesOutAlongItsAxisByTheCylinders) {
   ASSERT_EQ(a.parts[1].name, "pin");
   const double clearance = 0.01, tolerance = 0.01;
   // The facets cross by far more than the tolerance: what the triangles alone would refuse.
-  const auto facets = find_interferences(
-      [&] {
-        Assembly m = a;
-        for (AssemblyPart& p : m.parts) p.mesh.cylinder_of.clear(), p.mesh.cylinders.clear();
-        return m;
-      }(),
-      tolerance);
+  const auto facets = find_interferences(test::without_cylinders(a), tolerance);
   ASSERT_EQ(facets.size(), 1u);
   EXPECT_GT(facets[0].depth, 1.5 * tolerance);
 
@@ -160,8 +154,7 @@ TEST(CylinderMate, ThePinSlidesOutAlongItsAxisByTheCylinders) {
 }
 
 TEST(CylinderMate, WithoutTheCylindersTheSameTrianglesStayPut) {
-  Assembly a = read_pin_in_bore();
-  for (AssemblyPart& p : a.parts) p.mesh.cylinder_of.clear(), p.mesh.cylinders.clear();
+  const Assembly a = test::without_cylinders(read_pin_in_bore());
   const DisassemblyResult r = disassemble(a, {.clearance = 0.01, .tolerance = 0.01, .jobs = 2, .plan_time_limit = 0});
   EXPECT_EQ(r.interferences.size(), 1u);
   EXPECT_FALSE(r.complete);
