@@ -234,7 +234,8 @@ void brep_instances(const TopoDS_Shape& shape, const std::string& stem, std::vec
 // that is one within `tolerance`, found from 17 × 17 samples of the face's parameter box: the
 // axis is the direction the normals are perpendicular to (to 1e-7), the centre the point their
 // lines pass nearest, the radius the samples' mean distance; `deviation` is the samples' largest
-// distance from that radius (an estimate: the face is not examined between the samples).
+// distance from that radius (an estimate: the face is not examined between the samples; the
+// caller also measures the face's mesh nodes). An analytic cylinder has deviation 0.
 std::optional<gp_Cylinder> cylinder_of(const TopoDS_Face& face, double tolerance, double& deviation) {
   const BRepAdaptor_Surface surface(face);
   deviation = 0.0;
@@ -404,6 +405,19 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
           c = cylinder_of(face, 0.1 * params.Deflection, deviation);
         } catch (const Standard_Failure&) {
           c.reset();
+        }
+        // A fitted (free-form) face is also measured at its mesh's nodes, which lie on it: between
+        // the fit's samples, where the facets are. Beyond a tenth of the deflection it is no cylinder.
+        if (c && deviation > 0.0) {
+          const gp_Ax1 axis = c->Axis();
+          const gp_Trsf to_face = loc.Transformation();
+          for (int i = 1; i <= tri->NbNodes() && c; ++i) {
+            const gp_Pnt p = tri->Node(i).Transformed(to_face);
+            const gp_Vec w(axis.Location(), p);
+            const double radial = w.Crossed(gp_Vec(axis.Direction())).Magnitude();
+            deviation = std::max(deviation, std::abs(radial - c->Radius()));
+            if (!(deviation <= 0.1 * params.Deflection)) c.reset();
+          }
         }
         if (c) {
           const gp_Pnt o = c->Axis().Location();

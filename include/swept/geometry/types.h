@@ -49,7 +49,8 @@ struct CadCylinder {
   Vec3 axis = Vec3::UnitZ();   ///< unit direction of the axis (either sign)
   double radius = 0.0;
   /// How far the face may lie from this cylinder: 0 for an analytic cylinder; for a free-form
-  /// (B-spline) face the reader fitted it to, the largest distance of its samples from it.
+  /// (B-spline) face the reader fitted it to, the largest distance from it of its samples and of
+  /// its mesh nodes.
   double deviation = 0.0;
 };
 
