@@ -400,31 +400,35 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
         std::int32_t cylinder = -1;
         double deviation = 0.0;
         // A face whose surface cannot be evaluated is no cylinder (its triangles still count).
-        std::optional<gp_Cylinder> c;
+        gp_Cylinder cyl;
+        bool is_cylinder = false;
         try {
-          c = cylinder_of(face, 0.1 * params.Deflection, deviation);
+          if (const std::optional<gp_Cylinder> c = cylinder_of(face, 0.1 * params.Deflection, deviation)) {
+            cyl = *c;
+            is_cylinder = true;
+          }
         } catch (const Standard_Failure&) {
-          c.reset();
+          is_cylinder = false;
         }
         // A fitted (free-form) face is also measured at its mesh's nodes, which lie on it: between
         // the fit's samples, where the facets are. Beyond a tenth of the deflection it is no cylinder.
-        if (c && deviation > 0.0) {
-          const gp_Ax1 axis = c->Axis();
+        if (is_cylinder && deviation > 0.0) {
+          const gp_Ax1 axis = cyl.Axis();
           const gp_Trsf to_face = loc.Transformation();
-          for (int i = 1; i <= tri->NbNodes() && c; ++i) {
+          for (int i = 1; i <= tri->NbNodes() && is_cylinder; ++i) {
             const gp_Pnt p = tri->Node(i).Transformed(to_face);
             const gp_Vec w(axis.Location(), p);
             const double radial = w.Crossed(gp_Vec(axis.Direction())).Magnitude();
-            deviation = std::max(deviation, std::abs(radial - c->Radius()));
-            if (!(deviation <= 0.1 * params.Deflection)) c.reset();
+            deviation = std::max(deviation, std::abs(radial - cyl.Radius()));
+            is_cylinder = deviation <= 0.1 * params.Deflection;
           }
         }
-        if (c) {
-          const gp_Pnt o = c->Axis().Location();
-          const gp_Dir d = c->Axis().Direction();
+        if (is_cylinder) {
+          const gp_Pnt o = cyl.Axis().Location();
+          const gp_Dir d = cyl.Axis().Direction();
           cylinder = static_cast<std::int32_t>(soup.cylinders.size());
           soup.cylinders.push_back({output_per_shape_unit * Vec3(o.X(), o.Y(), o.Z()), Vec3(d.X(), d.Y(), d.Z()),
-                                    output_per_shape_unit * c->Radius(), output_per_shape_unit * deviation});
+                                    output_per_shape_unit * cyl.Radius(), output_per_shape_unit * deviation});
         }
         const gp_Trsf trsf = loc.Transformation();
         const bool reversed = face.Orientation() == TopAbs_REVERSED;
