@@ -159,7 +159,8 @@ void run(const DisassembleCliOptions& o) {
                          {"sequence", r.time_ms.sequence}}}};
     std::cout << json_text(doc, 2) << "\n";
   } else {
-    std::cout << "assembly     " << o.assembly << ": " << a.parts.size() << " parts, " << a.triangle_count()
+    std::cout << "assembly     " << o.assembly << ": " << a.parts.size() << (a.parts.size() == 1 ? " part, " : " parts, ")
+              << a.triangle_count()
               << " triangles (unit " << a.unit << ")\n";
     std::cout << "contact      clearance " << options.clearance << ", mating tolerance " << r.tolerance << "\n";
     for (const Interference& f : r.interferences)
@@ -179,8 +180,11 @@ void run(const DisassembleCliOptions& o) {
                  s.removed && s.method == RemovalMethod::pull ? direction_text(s.direction) : "",
                  s.removed ? fmt_fixed(s.distance, 2) : "", blockers, fmt_fixed(s.time_ms, 1)});
     }
-    table.print(std::cout);
-    std::cout << "result       " << (r.complete ? "complete: every movable part comes out" : "not complete: parts stay")
+    if (!r.sequence.empty()) table.print(std::cout);
+    const bool nothing_moves = r.fixed.size() == a.parts.size();
+    std::cout << "result       "
+              << (nothing_moves ? "complete: nothing to take apart, no part is movable"
+                                : r.complete ? "complete: every movable part comes out" : "not complete: parts stay")
               << " (fixed: ";
     for (std::size_t i = 0; i < r.fixed.size(); ++i) std::cout << (i ? ", " : "") << a.parts[r.fixed[i]].name;
     std::cout << ")\n"

@@ -138,8 +138,9 @@ class Sequencer {
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < a_.parts.size(); ++i)
       if (a_.parts[i].fixed) out.push_back(i);
-    if (!out.empty() || a_.parts.size() < 2) return out;
-    // The base: the part with the largest bounding box (the first of equals).
+    if (!out.empty() || a_.parts.empty()) return out;
+    // The base: the part with the largest bounding box (the first of equals); a part alone is
+    // the base, with nothing to take out of it.
     std::size_t best = 0;
     double volume = -1.0;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -287,7 +288,8 @@ class Sequencer {
     p.rotation = RotationMode::free;
     p.time_limit = o_.plan_time_limit;
     p.threads = 1;
-    PlanOptions options{.threads = 1};
+    PlanOptions options;
+    options.threads = 1;
     if (o_.plan_max_queries > 0) options.max_queries = o_.plan_max_queries;
     const PlanResult r = plan(p, *scene, options);
     queries_ += r.queries.distance;

@@ -245,7 +245,7 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   // named in a warning; a file without any is an error.
   for (const TriangleSoup& p : model.parts)
     if (p.triangles.empty() && model.parts.size() > 1)
-      model.warnings.push_back(display + ": part '" + p.name + "' has no triangles (it did not tessellate); left out");
+      model.warnings.push_back(display + ": part '" + p.name + "' has no triangles (no faces, or they did not tessellate); left out");
   std::erase_if(model.parts, [](const TriangleSoup& p) { return p.triangles.empty(); });
   if (model.parts.empty()) return file_error(display, "contains no triangles");
 

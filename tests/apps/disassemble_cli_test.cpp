@@ -174,10 +174,35 @@ TEST(DisassembleCli, ViewPageDrawsTheBlockingGraphOfTheLockedParts) {
   std::size_t arrows = 0;
   for (const auto& b : doc["blocking"]) arrows += b["directions"].size();
   EXPECT_EQ(page["blocking"].size(), arrows);
-  for (const auto& step : cli["sequence"])
-    if (step["status"] == "blocked")
+  for (const auto& step : cli["sequence"]) {
+    if (step["status"] == "blocked") {
       EXPECT_NE(page["info_at_end"].get<std::string>().find(step["part"].get<std::string>() + " blocked:"), std::string::npos)
           << page["info_at_end"];
+    }
+  }
+}
+
+// A file with one part (a single-part STEP, one mesh): that part is the base, and there is
+// nothing to take apart: complete, exit 0, an empty sequence, no part "removed" by a pull of
+// length 0 (which is what a one-part file gave before).
+TEST(DisassembleCli, APartAloneIsTheBaseWithNothingToTakeApart) {
+  const fs::path dir = scratch("alone");
+  const Assembly ring = bolted_ring();
+  ASSERT_TRUE(write_stl_binary(dir / "ring.stl", ring.parts[1].mesh).ok());
+  std::ofstream(dir / "assembly.toml") << "[[part]]\nfile = \"ring.stl\"\n";
+  const CliRun json = run_cli("disassemble " + (dir / "assembly.toml").string() + " --json");
+  ASSERT_EQ(json.code, 0) << json.out;
+  const auto doc = nlohmann::json::parse(json.out);
+  EXPECT_TRUE(doc["complete"].get<bool>());
+  EXPECT_TRUE(doc["sequence"].empty()) << doc["sequence"];
+  ASSERT_EQ(doc["parts"].size(), 1u);
+  EXPECT_TRUE(doc["parts"][0]["fixed"].get<bool>());
+  const CliRun table = run_cli("disassemble " + (dir / "assembly.toml").string());
+  EXPECT_EQ(table.code, 0);
+  EXPECT_NE(table.out.find("1 part, "), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("nothing to take apart"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("(fixed: ring)"), std::string::npos) << table.out;
+  EXPECT_EQ(table.out.find("removed"), std::string::npos) << table.out;
 }
 
 TEST(DisassembleCli, BadInputIsExitOneAndWritesNothing) {
