@@ -31,11 +31,12 @@ void check_pulls_independently(const Assembly& a, const DisassemblyResult& r, do
     std::vector<std::size_t> staying;
     for (std::size_t i = 0; i < a.parts.size(); ++i)
       if (!gone.count(i) && std::find(s.parts.begin(), s.parts.end(), i) == s.parts.end()) staying.push_back(i);
-    if (s.method == RemovalMethod::pull)
+    if (s.method == RemovalMethod::pull) {
       EXPECT_EQ(pull_violations(a, s.parts, staying, s.direction, s.distance, clearance, tolerance.value_or(r.tolerance),
                                 samples),
                 0)
           << "the pull of " << names(a, s.parts)[0] << " passes through material";
+    }
     gone.insert(s.parts.begin(), s.parts.end());
   }
 }
