@@ -412,11 +412,11 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
         }
         // A fitted (free-form) face is also measured at its mesh's nodes, which lie on it: between
         // the fit's samples, where the facets are. Beyond a tenth of the deflection it is no cylinder.
+        const gp_Trsf trsf = loc.Transformation();
         if (is_cylinder && deviation > 0.0) {
           const gp_Ax1 axis = cyl.Axis();
-          const gp_Trsf to_face = loc.Transformation();
           for (int i = 1; i <= tri->NbNodes() && is_cylinder; ++i) {
-            const gp_Pnt p = tri->Node(i).Transformed(to_face);
+            const gp_Pnt p = tri->Node(i).Transformed(trsf);
             const gp_Vec w(axis.Location(), p);
             const double radial = w.Crossed(gp_Vec(axis.Direction())).Magnitude();
             deviation = std::max(deviation, std::abs(radial - cyl.Radius()));
@@ -430,7 +430,6 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
           soup.cylinders.push_back({output_per_shape_unit * Vec3(o.X(), o.Y(), o.Z()), Vec3(d.X(), d.Y(), d.Z()),
                                     output_per_shape_unit * cyl.Radius(), output_per_shape_unit * deviation});
         }
-        const gp_Trsf trsf = loc.Transformation();
         const bool reversed = face.Orientation() == TopAbs_REVERSED;
         for (int i = 1; i <= tri->NbTriangles(); ++i) {
           int n[3];
