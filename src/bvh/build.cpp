@@ -105,10 +105,13 @@ std::uint64_t morton_code(const Vec3& cell) {
   return spread(cell.x()) | spread(cell.y()) << 1 | spread(cell.z()) << 2;
 }
 
-// A node waiting to be processed: its index and its triangle range in `ids`.
+// A node waiting to be processed: its index and its triangle range in `ids`; with min-sa, also
+// its own fit, made already when its parent weighed the split that made it.
 struct Pending {
   std::int32_t node = 0;
   std::uint32_t begin = 0, end = 0;
+  bool fitted = false;
+  Fit fit;
 };
 
 // What processing a node produced besides its RSS: where its triangles split (or a leaf), or
@@ -118,6 +121,8 @@ struct Outcome {
   bool subtree = false;
   int subtree_depth = 0;     // levels of the finished subtree, its root included
   std::uint32_t middle = 0;  // children: [begin, middle) and [middle, end)
+  bool child_fits = false;   // min-sa fitted both children to cost the split: their fits
+  Fit child_fit[2];
 };
 
 // With one triangle per leaf, a node of n triangles has exactly 2n − 1 nodes below and
@@ -159,6 +164,11 @@ bool link_node(Node& node, const Pending& p, const Outcome& o, Rss rss, const Ve
   node.count = 0;
   children[0] = {child, p.begin, o.middle};
   children[1] = {child + 1, o.middle, p.end};
+  if (o.child_fits)
+    for (int k = 0; k < 2; ++k) {
+      children[k].fitted = true;
+      children[k].fit = o.child_fit[k];
+    }
   return true;
 }
 
@@ -207,16 +217,16 @@ struct Builder {
   }
 
   // The RSS that process() gives a node of these triangles (the one-triangle closed form, else
-  // the node's own fit orients it): min-sa's cost of a candidate child, exactly as the child
-  // would be built.
-  Rss subset_rss(const std::uint32_t* subset, std::size_t n, Scratch& s) const {
+  // the node's own fit orients it, `fitted` when given): min-sa's cost of a candidate child,
+  // exactly as the child would be built.
+  Rss subset_rss(const std::uint32_t* subset, std::size_t n, Scratch& s, const Mat3* fitted = nullptr) const {
     const Vec3 origin = info[subset[0]].t.p;
     Mat3 axes;
     if (n == 1 && detail::single_triangle_axes(info[subset[0]].t, axes)) {
       detail::project_vertices(info.data(), subset, n, axes, origin, s.child_projected);
       return detail::make_rss(detail::rss_extents(s.child_projected.data(), s.child_projected.size()), axes, origin);
     }
-    axes = detail::fit_ids(info.data(), subset, n, config.fitter).axes;
+    axes = fitted ? *fitted : detail::fit_ids(info.data(), subset, n, config.fitter).axes;
     Vec3 lo, hi;
     detail::project_vertices(info.data(), subset, n, axes, origin, s.child_projected, &lo, &hi);
     detail::RssEdges edges(lo, hi);
@@ -227,19 +237,65 @@ struct Builder {
                             axes, origin);
   }
 
-  // SA(L) + SA(R) of candidate `a`: min-sa fits each side as its own node (the paper's eq. (4)
-  // with each child's RSS, SPEC §2.2); min-sa-box takes the RSS around each side's bounding box
-  // in the node's frame, from the one pass (cheaper, not the paper's rule).
-  double split_cost(const std::uint32_t* node_ids, std::size_t n, const std::vector<std::uint8_t>& side,
-                    const Vec3 lo[2], const Vec3 hi[2], Scratch& s) const {
-    double cost = 0.0;
-    if (config.split == SplitRule::min_sa) {
+  // min-sa's SA(L) + SA(R) of every candidate `a` that leaves no side empty (`valid`): each side
+  // fitted as its own node (the paper's eq. (4) with each child's RSS, SPEC §2.2), exactly as
+  // fit_ids and subset_rss would fit it alone — the six sides' fits accumulated in the same two
+  // passes over the node's triangles instead of two passes over each side. Their fits go to
+  // `fits`: the chosen candidate's are its children's own.
+  void min_sa_costs(const std::uint32_t* node_ids, std::size_t n, int candidates, const bool valid[3], double cost[3],
+                    Fit fits[3][2], Scratch& s) const {
+    detail::FitAccumulator acc[3][2];
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j + detail::kPrefetchAhead < n) detail::prefetch(info.data() + node_ids[j + detail::kPrefetchAhead]);
+      const TriInfo& t = info[node_ids[j]];
+      for (int a = 0; a < candidates; ++a)
+        if (valid[a]) acc[a][s.side[a][j]].first(t);
+    }
+    for (int a = 0; a < candidates; ++a)
+      if (valid[a])
+        for (auto& side : acc[a]) side.middle(config.fitter);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j + detail::kPrefetchAhead < n) detail::prefetch(info.data() + node_ids[j + detail::kPrefetchAhead]);
+      const TriInfo& t = info[node_ids[j]];
+      const detail::TriMoments mo = detail::tri_moments(t);
+      for (int a = 0; a < candidates; ++a)
+        if (valid[a]) acc[a][s.side[a][j]].second(t, mo);
+    }
+    for (int a = 0; a < candidates; ++a) {
+      if (!valid[a]) continue;
+      // A candidate that splits the triangles as an earlier one did (or with the sides swapped)
+      // costs the same, and ties keep the earlier axis: it cannot be chosen. (Every candidate
+      // of a two-triangle node is such a repeat.)
+      bool repeat = false;
+      for (int e = 0; e < a && !repeat; ++e) {
+        if (!valid[e]) continue;
+        const bool swapped = s.side[e][0] != s.side[a][0];
+        repeat = std::equal(s.side[a].begin(), s.side[a].begin() + static_cast<std::ptrdiff_t>(n), s.side[e].begin(),
+                            [swapped](std::uint8_t x, std::uint8_t y) { return (x != y) == swapped; });
+      }
+      if (repeat) {
+        cost[a] = std::numeric_limits<double>::infinity();
+        continue;
+      }
       s.ids[0].clear();
       s.ids[1].clear();
-      for (std::size_t j = 0; j < n; ++j) s.ids[side[j]].push_back(node_ids[j]);
-      for (int k = 0; k < 2; ++k) cost += surface_area(subset_rss(s.ids[k].data(), s.ids[k].size(), s));
-      return cost;
+      for (std::size_t j = 0; j < n; ++j) s.ids[s.side[a][j]].push_back(node_ids[j]);
+      cost[a] = 0.0;
+      for (int k = 0; k < 2; ++k) {
+        // A one-triangle side takes the closed form (subset_rss), and so does the child it
+        // becomes: its fit is not needed.
+        Mat3 single;
+        const bool closed_form = s.ids[k].size() == 1 && detail::single_triangle_axes(info[s.ids[k][0]].t, single);
+        if (!closed_form) fits[a][k] = acc[a][k].finish();
+        cost[a] += surface_area(subset_rss(s.ids[k].data(), s.ids[k].size(), s, closed_form ? nullptr : &fits[a][k].axes));
+      }
     }
+  }
+
+  // SA(L) + SA(R) of a candidate for min-sa-box: the RSS around each side's bounding box in the
+  // node's frame, from the one pass (cheaper, not the paper's rule).
+  static double box_cost(const Vec3 lo[2], const Vec3 hi[2]) {
+    double cost = 0.0;
     for (int k = 0; k < 2; ++k) {
       const Vec3 ext = hi[k] - lo[k];
       const double w = ext.x(), h = ext.y(), r = 0.5 * ext.z();
@@ -262,7 +318,7 @@ struct Builder {
       return out;
     }
     // The node's own fit orients its RSS (SPEC §2.3) and gives the split candidates (§2.2).
-    const Fit f = detail::fit_ids(info.data(), node_ids, n, config.fitter);
+    const Fit f = node.fitted ? node.fit : detail::fit_ids(info.data(), node_ids, n, config.fitter);
     Vec3 box_lo, box_hi;
     detail::project_vertices(info.data(), node_ids, n, f.axes, origin, s.projected, &box_lo, &box_hi);
     detail::RssEdges edges(box_lo, box_hi);
@@ -306,12 +362,18 @@ struct Builder {
     if (leaf) return out;
     out.leaf = false;
 
+    bool valid[3] = {false, false, false};  // a candidate that leaves one side empty is none
+    for (int a = 0; a < candidates; ++a) valid[a] = left[a] != 0 && left[a] != n;
+    const bool fit_sides = candidates > 1 && config.split == SplitRule::min_sa;
+    double min_sa_cost[3];
+    Fit side_fits[3][2];
+    if (fit_sides) min_sa_costs(node_ids, n, candidates, valid, min_sa_cost, side_fits, s);
     double best_cost = inf;
     int best = -1;
     for (int a = 0; a < candidates; ++a) {
-      if (left[a] == 0 || left[a] == n) continue;  // leaves one side empty: not a candidate
+      if (!valid[a]) continue;
       // With one candidate (largest) there is nothing to compare.
-      const double cost = candidates == 1 ? 0.0 : split_cost(node_ids, n, s.side[a], lo[a], hi[a], s);
+      const double cost = candidates == 1 ? 0.0 : fit_sides ? min_sa_cost[a] : box_cost(lo[a], hi[a]);
       if (cost < best_cost) {  // ties keep the earlier axis
         best_cost = cost;
         best = a;
@@ -319,6 +381,11 @@ struct Builder {
     }
     if (best >= 0) {
       out.middle = apply(node, s.side[best], s);
+      if (fit_sides) {
+        out.child_fits = true;
+        out.child_fit[0] = side_fits[best][0];
+        out.child_fit[1] = side_fits[best][1];
+      }
       return out;
     }
     // Every axis leaves a side empty (e.g. coincident centroids): split at the median of the

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace swept::detail {
@@ -56,6 +57,43 @@ inline double epsilon_for_extent(double extent) { return 1e-12 * extent * extent
 
 /// Fitter over the triangles `ids` (indices into `info`).
 Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter fitter);
+
+/// A triangle's centroid m and its vertex scatter about it, S = Σ_v (v − m)(v − m)ᵀ, as the six
+/// unique entries xx, xy, xz, yy, yz, zz: what every fitter's second pass adds per triangle.
+struct TriMoments {
+  Vec3 m;
+  double scatter[6];
+};
+TriMoments tri_moments(const TriInfo& t);
+
+/// `fit_ids` in its pieces, for callers that fit several subsets in the same passes over their
+/// union (min-sa's candidate children): first() every triangle of the subset, in order, then
+/// middle(), then second() every triangle again in the same order, then finish(). The same
+/// arithmetic in the same order as `fit_ids`, so the same Fit to the last bit (fit_ids is
+/// written with it).
+class FitAccumulator {
+ public:
+  void first(const TriInfo& t);
+  void middle(Fitter fitter);
+  void second(const TriInfo& t, const TriMoments& mo);
+  Fit finish();
+  std::size_t count() const { return n_; }
+
+ private:
+  std::size_t n_ = 0;
+  Vec3 sum_m_ = Vec3::Zero();
+  double sum_a_ = 0.0;
+  Vec3 sum_am_ = Vec3::Zero();
+  double max_a_ = 0.0;
+  Vec3 lo_ = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi_ = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  FitterRecipe used_{};
+  bool fell_back_ = false;
+  double eps_ = 0.0, scale_ = 1.0;
+  Vec3 c_ = Vec3::Zero();
+  double acc_[6] = {0, 0, 0, 0, 0, 0};
+  double a_min_ = std::numeric_limits<double>::infinity();
+};
 
 /// An RSS in its own frame: rectangle [xlo, xhi] × [ylo, yhi] at height zc, radius r.
 struct RectExtents {

@@ -91,81 +91,93 @@ bool single_triangle_axes(const Triangle& t, Mat3& axes) {
   return true;
 }
 
-namespace {
+TriMoments tri_moments(const TriInfo& t) {
+  TriMoments out;
+  out.m = t.centroid();
+  const Vec3 a = t.t.p - out.m, b = t.t.q - out.m, e = t.t.r - out.m;  // S from the vertices about m
+  out.scatter[0] = a.x() * a.x() + b.x() * b.x() + e.x() * e.x();
+  out.scatter[1] = a.x() * a.y() + b.x() * b.y() + e.x() * e.y();
+  out.scatter[2] = a.x() * a.z() + b.x() * b.z() + e.x() * e.z();
+  out.scatter[3] = a.y() * a.y() + b.y() * b.y() + e.y() * e.y();
+  out.scatter[4] = a.y() * a.z() + b.y() * b.z() + e.y() * e.z();
+  out.scatter[5] = a.z() * a.z() + b.z() * b.z() + e.z() * e.z();
+  return out;
+}
 
-struct Sums {
-  std::size_t n = 0;
-  Vec3 sum_m = Vec3::Zero();
-  double sum_a = 0.0;
-  Vec3 sum_am = Vec3::Zero();
-  double max_a = 0.0;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
-};
+// Pass 1: means, total area and the box (for ε).
+void FitAccumulator::first(const TriInfo& t) {
+  const Vec3 m = t.centroid();
+  ++n_;
+  sum_m_ += m;
+  sum_a_ += t.area;
+  sum_am_ += t.area * m;
+  max_a_ = std::max(max_a_, t.area);
+  lo_ = lo_.cwiseMin(t.t.p).cwiseMin(t.t.q).cwiseMin(t.t.r);
+  hi_ = hi_.cwiseMax(t.t.p).cwiseMax(t.t.q).cwiseMax(t.t.r);
+}
 
-}  // namespace
+void FitAccumulator::middle(Fitter fitter) {
+  eps_ = epsilon_for_extent((hi_ - lo_).norm());
+  used_ = swept::info(fitter).recipe;
+  if (used_.area_weighted && !(sum_a_ >= eps_ && sum_a_ > 0.0)) {
+    used_ = swept::info(Fitter::pqp).recipe;
+    fell_back_ = true;
+  }
+  c_ = used_.area_weighted ? Vec3(sum_am_ / sum_a_) : Vec3(sum_m_ / static_cast<double>(n_));
+  scale_ = used_.per_vertex ? 1.0 / (3.0 * static_cast<double>(n_)) : 1.0;
+}
 
-Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter fitter) {
+// Pass 2: the matrix, six unique entries. INERTIA_FIT's weights A_i / A_min share the factor
+// 1 / A_min, applied once at the end, so A_min is found in the same pass: the smallest area
+// that is ≥ ε (smaller, degenerate triangles do not lower it).
+void FitAccumulator::second(const TriInfo& t, const TriMoments& mo) {
+  double w = 1.0;
+  if (used_.area_weighted) {
+    w = t.area;
+    if (t.area >= eps_ && t.area < a_min_) a_min_ = t.area;
+  }
+  const Vec3 d = mo.m - c_;
+  const double wc = w * used_.k_center, ws = w * used_.k_scatter;
+  acc_[0] += wc * d.x() * d.x() + ws * mo.scatter[0];
+  acc_[1] += wc * d.x() * d.y() + ws * mo.scatter[1];
+  acc_[2] += wc * d.x() * d.z() + ws * mo.scatter[2];
+  acc_[3] += wc * d.y() * d.y() + ws * mo.scatter[3];
+  acc_[4] += wc * d.y() * d.z() + ws * mo.scatter[4];
+  acc_[5] += wc * d.z() * d.z() + ws * mo.scatter[5];
+}
+
+Fit FitAccumulator::finish() {
   Fit out;
-  if (n == 0) return out;
-  // Pass 1: means, total area and the box (for ε).
-  Sums s;
-  s.n = n;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
-    const TriInfo& t = info[ids[j]];
-    const Vec3 m = t.centroid();
-    s.sum_m += m;
-    s.sum_a += t.area;
-    s.sum_am += t.area * m;
-    s.max_a = std::max(s.max_a, t.area);
-    s.lo = s.lo.cwiseMin(t.t.p).cwiseMin(t.t.q).cwiseMin(t.t.r);
-    s.hi = s.hi.cwiseMax(t.t.p).cwiseMax(t.t.q).cwiseMax(t.t.r);
-  }
-  const double eps = epsilon_for_extent((s.hi - s.lo).norm());
-  FitterRecipe used = swept::info(fitter).recipe;
-  if (used.area_weighted && !(s.sum_a >= eps && s.sum_a > 0.0)) {
-    used = swept::info(Fitter::pqp).recipe;
-    out.fell_back = true;
-  }
-  const Vec3 c = used.area_weighted ? Vec3(s.sum_am / s.sum_a) : Vec3(s.sum_m / static_cast<double>(n));
-  const double k_center = used.k_center, k_scatter = used.k_scatter;
-  double scale = used.per_vertex ? 1.0 / (3.0 * static_cast<double>(n)) : 1.0;
-
-  // Pass 2: the matrix, six unique entries. INERTIA_FIT's weights A_i / A_min share the factor
-  // 1 / A_min, applied once at the end, so A_min is found in the same pass: the smallest area
-  // that is ≥ ε (smaller, degenerate triangles do not lower it).
-  double acc[6] = {0, 0, 0, 0, 0, 0};
-  double a_min = std::numeric_limits<double>::infinity();
-  for (std::size_t j = 0; j < n; ++j) {
-    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
-    const TriInfo& t = info[ids[j]];
-    double w = 1.0;
-    if (used.area_weighted) {
-      w = t.area;
-      if (t.area >= eps && t.area < a_min) a_min = t.area;
-    }
-    const Vec3 m = t.centroid();
-    const Vec3 d = m - c;
-    const Vec3 a = t.t.p - m, b = t.t.q - m, e = t.t.r - m;  // S from the vertices about m
-    const double wc = w * k_center, ws = w * k_scatter;
-    acc[0] += wc * d.x() * d.x() + ws * (a.x() * a.x() + b.x() * b.x() + e.x() * e.x());
-    acc[1] += wc * d.x() * d.y() + ws * (a.x() * a.y() + b.x() * b.y() + e.x() * e.y());
-    acc[2] += wc * d.x() * d.z() + ws * (a.x() * a.z() + b.x() * b.z() + e.x() * e.z());
-    acc[3] += wc * d.y() * d.y() + ws * (a.y() * a.y() + b.y() * b.y() + e.y() * e.y());
-    acc[4] += wc * d.y() * d.z() + ws * (a.y() * a.z() + b.y() * b.z() + e.y() * e.z());
-    acc[5] += wc * d.z() * d.z() + ws * (a.z() * a.z() + b.z() * b.z() + e.z() * e.z());
-  }
-  if (used.by_min_area) {
-    if (!std::isfinite(a_min)) a_min = s.max_a;  // every triangle below ε, but their sum is not
+  if (n_ == 0) return out;
+  double scale = scale_;
+  if (used_.by_min_area) {
+    double a_min = a_min_;
+    if (!std::isfinite(a_min)) a_min = max_a_;  // every triangle below ε, but their sum is not
     scale /= a_min;
   }
   Mat3 m;
-  m << acc[0], acc[1], acc[2], acc[1], acc[3], acc[4], acc[2], acc[4], acc[5];
+  m << acc_[0], acc_[1], acc_[2], acc_[1], acc_[3], acc_[4], acc_[2], acc_[4], acc_[5];
   m *= scale;
-  out.split_point = c;
+  out.split_point = c_;
+  out.fell_back = fell_back_;
   sorted_eigen(m, out.axes, out.eigenvalues);
   return out;
+}
+
+Fit fit_ids(const TriInfo* info, const std::uint32_t* ids, std::size_t n, Fitter fitter) {
+  FitAccumulator acc;
+  if (n == 0) return acc.finish();
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
+    acc.first(info[ids[j]]);
+  }
+  acc.middle(fitter);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j + kPrefetchAhead < n) prefetch(info + ids[j + kPrefetchAhead]);
+    const TriInfo& t = info[ids[j]];
+    acc.second(t, tri_moments(t));
+  }
+  return acc.finish();
 }
 
 RssEdges::RssEdges(const Vec3& lo, const Vec3& hi) {
