@@ -1,8 +1,9 @@
 // Micro-benchmarks of the proximity queries against FCL 0.7 (OBBRSS) in the same run:
 // collide and distance on a CAD mesh pair at near-contact and far poses, and distance along
 // straight motions with and without coherence (each query hinted with the previous one's
-// closest pair: DistanceRequest::hint), and pure translations certified step by step against
-// checked exactly in one traversal (sweep_translation).
+// closest pair: DistanceRequest::hint; or told its own answer, the ceiling of any warm start),
+// and pure translations certified step by step against checked exactly in one traversal
+// (sweep_translation).
 //   bench_queries [--benchmark_filter=...]      (mesh pair: SWEPT_BENCH_A / SWEPT_BENCH_B,
 //                                                default occt/motor.stl against itself)
 #include "swept/bench/fcl_model.h"
@@ -15,7 +16,9 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -112,20 +115,32 @@ void BM_FclCollide(benchmark::State& state) {
   }
 }
 
-// Along the motions, pose after pose; argument 1: each query hinted with the previous one's pair.
+// Along the motions, pose after pose. Argument 0: each query cold; 1: hinted with the previous
+// query's closest pair (DistanceRequest::hint); 2: the ceiling of any warm start, each query told
+// its own answer in advance (upper_bound = the next double above the exact distance, measured
+// before the timing), so that all it does is prove it. Counter `rss_tests`: RSS pair tests per
+// query (the same on every run).
 void BM_SweptDistancePath(benchmark::State& state) {
   const Fixture& f = Fixture::get();
-  const bool coherent = state.range(0) == 1;
+  const int mode = static_cast<int>(state.range(0));
+  std::vector<double> known;
+  if (mode == 2)
+    for (const Pose& p : f.path) known.push_back(std::nextafter(distance(f.a, {}, f.b, p).distance, std::numeric_limits<double>::infinity()));
+  std::uint64_t tests = 0;
   for (auto _ : state) {
     DistanceRequest request;
     double sum = 0;
-    for (const Pose& p : f.path) {
-      const DistanceResult d = distance(f.a, {}, f.b, p, request);
-      if (coherent) request.hint = d.hint;
+    tests = 0;
+    for (std::size_t i = 0; i < f.path.size(); ++i) {
+      if (mode == 2) request.upper_bound = known[i];
+      const DistanceResult d = distance(f.a, {}, f.b, f.path[i], request);
+      if (mode == 1) request.hint = d.hint;
       sum += d.distance;
+      tests += d.stats.bv_tests;
     }
     benchmark::DoNotOptimize(sum);
   }
+  state.counters["rss_tests"] = static_cast<double>(tests) / static_cast<double>(f.path.size());
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * f.path.size()));
 }
 void BM_FclDistancePath(benchmark::State& state) {
@@ -175,7 +190,7 @@ void BM_SweptTranslation(benchmark::State& state) {
 }
 BENCHMARK(BM_SweptTranslation)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-BENCHMARK(BM_SweptDistancePath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SweptDistancePath)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FclDistancePath)->Unit(benchmark::kMillisecond);
 
 // Argument: 0 = near contact, 1 = far.
