@@ -420,43 +420,71 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   out.corners.clear();
   detail::reserve_huge(out.corners, n);
   out.corners.resize(n);
+  // Closed meshes have about n / 2 vertices: the table starts with room for them at half load
+  // and doubles when it is half full (a table for the worst case, 3n, spent its time in cache
+  // misses).
   std::size_t slots = 64;
-  while (slots < 6 * n) slots *= 2;  // at most 3n vertices: the table stays at most half full
+  while (slots < n) slots *= 2;
   constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> table(slots, kEmpty);
   std::vector<Vec3> vertices;
-  auto table_index = [&](const Vec3& v) -> std::uint32_t {
+  auto hash = [](const Vec3& v) {
     std::uint64_t k[3];
     std::memcpy(k, v.data(), sizeof(k));
     std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ULL;
     h = (h ^ (h >> 29) ^ k[1]) * 0xBF58476D1CE4E5B9ULL;
     h = (h ^ (h >> 32) ^ k[2]) * 0x94D049BB133111EBULL;
-    h ^= h >> 31;
+    return h ^ (h >> 31);
+  };
+  auto grow = [&] {
+    slots *= 2;
+    table.assign(slots, kEmpty);
+    for (std::uint32_t idx = 0; idx < vertices.size(); ++idx) {
+      std::size_t slot = hash(vertices[idx]) & (slots - 1);
+      while (table[slot] != kEmpty) slot = (slot + 1) & (slots - 1);
+      table[slot] = idx;
+    }
+  };
+  auto table_index = [&](const Vec3& v, std::uint64_t h) -> std::uint32_t {
     for (std::size_t slot = h & (slots - 1);; slot = (slot + 1) & (slots - 1)) {
       const std::uint32_t idx = table[slot];
       if (idx == kEmpty) {
-        table[slot] = static_cast<std::uint32_t>(vertices.size());
+        const auto added = static_cast<std::uint32_t>(vertices.size());
+        table[slot] = added;
         vertices.push_back(v);
-        return table[slot];
+        if (2 * vertices.size() >= slots) grow();
+        return added;
       }
-      if (std::memcmp(vertices[idx].data(), v.data(), sizeof(k)) == 0) return idx;
+      if (std::memcmp(vertices[idx].data(), v.data(), sizeof(Vec3)) == 0) return idx;
     }
   };
-  // In leaf order neighbouring triangles mostly share vertices: the last few vertices met are
-  // compared first (in cache), the table only on a miss.
-  constexpr std::size_t kRecent = 8;
-  std::array<std::uint32_t, kRecent> recent;
-  recent.fill(kEmpty);
-  std::size_t recent_next = 0;
+  // In leaf order a vertex is mostly met again soon after it was first met (its triangles are
+  // neighbours): a small direct-mapped cache of the last vertex per hash bucket, in cache, answers
+  // those, and the table (mostly cache misses) only the rest.
+  constexpr std::size_t kRecent = 4096;
+  std::vector<std::uint32_t> recent(kRecent, kEmpty);
   auto index_of = [&](const Vec3& v) {
-    for (const std::uint32_t r : recent)
-      if (r != kEmpty && std::memcmp(vertices[r].data(), v.data(), sizeof(Vec3)) == 0) return r;
-    const std::uint32_t idx = table_index(v);
-    recent[recent_next] = idx;
-    recent_next = (recent_next + 1) % kRecent;
-    return idx;
+    const std::uint64_t h = hash(v);
+    std::uint32_t& r = recent[(h >> 40) & (kRecent - 1)];
+    if (r != kEmpty && std::memcmp(vertices[r].data(), v.data(), sizeof(Vec3)) == 0) return r;
+    r = table_index(v, h);
+    return r;
   };
+  // Both are read far apart in memory, so they are fetched ahead: the triangle (in the input's
+  // order, not the leaves') 2·kAhead triangles ahead, the table slots of its corners kAhead ahead.
+  constexpr std::size_t kAhead = 8;
   for (std::size_t i = 0; i < n; ++i) {
+#if defined(__GNUC__)
+    if (i + 2 * kAhead < n) {
+      const char* record = reinterpret_cast<const char*>(&triangles[ids[i + 2 * kAhead]]);
+      __builtin_prefetch(record);
+      __builtin_prefetch(record + sizeof(Triangle) - 1);
+    }
+    if (i + kAhead < n) {
+      const Triangle& ahead = triangles[ids[i + kAhead]];
+      for (int c = 0; c < 3; ++c) __builtin_prefetch(table.data() + (hash(ahead[c]) & (slots - 1)));
+    }
+#endif
     const Triangle& t = triangles[ids[i]];
     out.corners[i] = {index_of(t.p), index_of(t.q), index_of(t.r)};
   }

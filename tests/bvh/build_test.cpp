@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <map>
 #include <numbers>
 
 namespace swept {
@@ -277,6 +278,17 @@ TEST(BuildBvh, TrianglesReadBackBitForBitWithSharedVertices) {
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   EXPECT_EQ(bvh->triangles.vertices.size(), keys.size());
+  // Numbered in order of first use along the leaves (neighbouring leaves read nearby vertices):
+  // replayed with a std::map over the bit patterns. The soup's ~1,500 vertices also make the
+  // builder's table (sized for n / 2 vertices) grow twice.
+  std::map<std::array<std::uint64_t, 3>, std::uint32_t> first_use;
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      std::array<std::uint64_t, 3> k;
+      std::memcpy(k.data(), tris[bvh->triangle_ids[i]][c].data(), sizeof(k));
+      const auto [it, added] = first_use.emplace(k, static_cast<std::uint32_t>(first_use.size()));
+      ASSERT_EQ(bvh->triangles.corners[i][c], it->second) << "triangle " << i << " corner " << c;
+    }
   auto box_only = build_bvh(std::vector<Triangle>(tris.begin(), tris.begin() + 13));
   ASSERT_TRUE(box_only);
   EXPECT_EQ(box_only->triangles.vertices.size(), 9u);
