@@ -217,16 +217,19 @@ struct Builder {
   }
 
   // The RSS that process() gives a node of these triangles (the one-triangle closed form, else
-  // the node's own fit orients it, `fitted` when given): min-sa's cost of a candidate child,
-  // exactly as the child would be built.
-  Rss subset_rss(const std::uint32_t* subset, std::size_t n, Scratch& s, const Mat3* fitted = nullptr) const {
+  // the node's own fit orients it): min-sa's cost of a candidate child, exactly as the child
+  // would be built. `accumulated` holds the subset's fit, passes done; it is finished into `fit`
+  // only when used (a one-triangle child takes the closed form and needs none).
+  Rss subset_rss(const std::uint32_t* subset, std::size_t n, Scratch& s, detail::FitAccumulator& accumulated,
+                 Fit& fit) const {
     const Vec3 origin = info[subset[0]].t.p;
     Mat3 axes;
     if (n == 1 && detail::single_triangle_axes(info[subset[0]].t, axes)) {
       detail::project_vertices(info.data(), subset, n, axes, origin, s.child_projected);
       return detail::make_rss(detail::rss_extents(s.child_projected.data(), s.child_projected.size()), axes, origin);
     }
-    axes = fitted ? *fitted : detail::fit_ids(info.data(), subset, n, config.fitter).axes;
+    fit = accumulated.finish();
+    axes = fit.axes;
     Vec3 lo, hi;
     detail::project_vertices(info.data(), subset, n, axes, origin, s.child_projected, &lo, &hi);
     detail::RssEdges edges(lo, hi);
@@ -281,14 +284,8 @@ struct Builder {
       s.ids[1].clear();
       for (std::size_t j = 0; j < n; ++j) s.ids[s.side[a][j]].push_back(node_ids[j]);
       cost[a] = 0.0;
-      for (int k = 0; k < 2; ++k) {
-        // A one-triangle side takes the closed form (subset_rss), and so does the child it
-        // becomes: its fit is not needed.
-        Mat3 single;
-        const bool closed_form = s.ids[k].size() == 1 && detail::single_triangle_axes(info[s.ids[k][0]].t, single);
-        if (!closed_form) fits[a][k] = acc[a][k].finish();
-        cost[a] += surface_area(subset_rss(s.ids[k].data(), s.ids[k].size(), s, closed_form ? nullptr : &fits[a][k].axes));
-      }
+      for (int k = 0; k < 2; ++k)
+        cost[a] += surface_area(subset_rss(s.ids[k].data(), s.ids[k].size(), s, acc[a][k], fits[a][k]));
     }
   }
 

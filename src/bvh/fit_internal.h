@@ -77,7 +77,6 @@ class FitAccumulator {
   void middle(Fitter fitter);
   void second(const TriInfo& t, const TriMoments& mo);
   Fit finish();
-  std::size_t count() const { return n_; }
 
  private:
   std::size_t n_ = 0;
