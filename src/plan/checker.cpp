@@ -7,10 +7,12 @@
 
 namespace swept::detail {
 
-DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint, bool decide) const {
+DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint, bool decide,
+                              bool apart) const {
   ++distance_queries_;
   const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint,
-                                .stop_below = decide && decide_blocked_ ? margin_ : -std::numeric_limits<double>::infinity()};
+                                .stop_below = decide && decide_blocked_ ? margin_ : -std::numeric_limits<double>::infinity(),
+                                .apart = apart};
   return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
 }
 
@@ -25,10 +27,12 @@ bool Checker::free(const Pose& pose) const {
   return query(pose, above, false).distance > margin_;
 }
 
-DistanceResult Checker::nearest(const Pose& pose, double enough) const { return query(pose, enough, false, {}, false); }
+DistanceResult Checker::nearest(const Pose& pose, double enough) const {
+  return query(pose, enough, false, {}, false, /*apart=*/true);
+}
 
-double Checker::below(const Pose& pose, double bound, bool relaxed) const {
-  const DistanceResult d = query(pose, bound, relaxed, {}, false);
+double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) const {
+  const DistanceResult d = query(pose, bound, relaxed, {}, false, apart);
   return d.exact ? d.distance : std::numeric_limits<double>::infinity();
 }
 

@@ -36,16 +36,21 @@ class Checker {
 
   /// A lower bound on the distance at `pose`, exact below `enough`.
   double clearance(const Pose& pose, double enough, bool relaxed = false) const;
+  /// The same query with its result: when exact (and above the margin), its witness points
+  /// are the closest pair.
+  DistanceResult measure(const Pose& pose, double enough) const { return query(pose, enough, false); }
   /// Is the distance at `pose` above the margin? The cheapest query: it stops as soon as every
   /// pair left is proved farther than the margin (nothing else is asked of it).
   bool free(const Pose& pose) const;
   /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
-  double below(const Pose& pose, double bound, bool relaxed = false) const;
-  /// The distance at `pose` with its witness points (world), exact below `enough` (counted).
+  /// `apart`: the pose is known free (on a certified motion), so no first-contact search.
+  double below(const Pose& pose, double bound, bool relaxed = false, bool apart = false) const;
+  /// The distance at `pose`, known free (a tree node), with its witness points (world), exact
+  /// below `enough` (counted).
   DistanceResult nearest(const Pose& pose, double enough) const;
   /// Exact distance at `pose` (for reporting clearance).
-  double exact(const Pose& pose, bool relaxed = false) const {
-    return below(pose, std::numeric_limits<double>::infinity(), relaxed);
+  double exact(const Pose& pose, bool relaxed = false, bool apart = false) const {
+    return below(pose, std::numeric_limits<double>::infinity(), relaxed, apart);
   }
 
   /// The straight motion a → b about the checker's reference point.
@@ -80,8 +85,10 @@ class Checker {
 
  private:
   /// One counted distance query against the obstacles (relaxed: the exempt pairs left out;
-  /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on).
-  DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}, bool decide = true) const;
+  /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on;
+  /// `apart`: the pose is known free, DistanceRequest::apart).
+  DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}, bool decide = true,
+                       bool apart = false) const;
 
   const PlanScene& scene_;
   double margin_;

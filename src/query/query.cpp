@@ -313,8 +313,9 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   // distance search would single out a zero among many near-zero bounds. It costs little when
   // the models are apart (most node pairs are rejected near the root); skipping it after a
   // hint that is not a contact made queries along motions into contact 2.4x slower.
-  // (Not with pairs left out: the first contact may be one of them.)
-  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > -kInf);
+  // (Not with pairs left out: the first contact may be one of them; not when the caller knows
+  // the models apart.)
+  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > -kInf) && !request.apart;
   warm.stop_below = cold.stop_below = request.stop_below;
   std::int32_t ci = -1, cj = -1;
   const CollideResult contact = contact_first ? collide_relative(a, b, rel, {}, &ci, &cj) : CollideResult{};

@@ -84,6 +84,11 @@ struct DistanceRequest {
   /// search that otherwise starts every query is skipped: a pair below the threshold ends the
   /// search as a contact would.)
   double stop_below = -std::numeric_limits<double>::infinity();
+  /// The caller knows the models are apart (a pose on a certified motion, a node of a search
+  /// tree): the first-contact search that otherwise starts every query is skipped. The answer
+  /// is the same, witness included; only the work differs (were they to overlap after all, the
+  /// distance search is slower to single out a zero than the contact search).
+  bool apart = false;
 };
 struct DistanceResult {
   double distance = std::numeric_limits<double>::infinity();
