@@ -93,6 +93,16 @@ TreeNode TreeSearch::make_node(const Pose& pose, double distance, std::int32_t p
   return {pose, context_.reference_at(pose), pose.quaternion(), distance, parent};
 }
 
+TreeNode TreeSearch::make_node(const Pose& pose, const DistanceResult& d) const {
+  TreeNode node = make_node(pose, d.distance, -1);
+  if (d.exact) {
+    node.near_known = true;
+    node.near_obstacle = d.point_a;
+    node.near_body = d.point_b;
+  }
+  return node;
+}
+
 Pose TreeSearch::sample(std::uint64_t i) const {
   const std::array<double, 6> u = Halton::point(i);
   const Aabb& bounds = context_.space.bounds;
@@ -181,14 +191,16 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
     const bool whole = s >= length;
     const Pose q = whole ? target : motion.at(s / length);
     if (inside(q)) {
-      const double dq = check.clearance(q, margin + kNodeReach * step_);
+      const DistanceResult mq = check.measure(q, margin + kNodeReach * step_);
+      const double dq = mq.distance;
       if (dq > margin && s > bubble) {
         // Past the free ball: the edge is certified later, if a path uses it. Its midpoint is
-        // checked now (a step across a thin wall has free ends).
-        const Pose mid = motion.at(0.5 * s / length);
-        if (check.free(mid)) {
+        // checked now (a step across a thin wall has free ends), unless either end's free ball
+        // holds it (the distance there is at least D(end) − s/2).
+        const bool mid_free = 0.5 * s < std::max(from.distance, dq) - margin || check.free(motion.at(0.5 * s / length));
+        if (mid_free) {
           reached = whole;
-          TreeNode node = make_node(q, dq, -1);
+          TreeNode node = make_node(q, mq);
           node.certified = false;
           return node;
         }
@@ -197,8 +209,7 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
         const Certificate c = check.certify(from.pose, from.distance, q, dq);
         if (c.clear()) {
           reached = whole;
-          TreeNode node = make_node(q, dq, -1);
-          return node;
+          return make_node(q, mq);
         }
         if (c.status != MotionStatus::blocked) return std::nullopt;  // deadline or cap
         s *= std::max(0.05, 0.5 * c.t_blocked);
@@ -252,13 +263,19 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
 std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& target) const {
   const Checker& check = context_.check;
   const double margin = check.margin();
-  const DistanceResult w = check.nearest(from.pose, margin + step_);
-  if (!w.exact) return std::nullopt;
-  Vec3 n = w.point_b - w.point_a;  // from the obstacle toward the body
+  // The closest points: the node's own query's when it was exact, else a query exact up to a step.
+  Vec3 obstacle = from.near_obstacle, body = from.near_body;
+  if (!from.near_known) {
+    const DistanceResult w = check.nearest(from.pose, margin + step_);
+    if (!w.exact) return std::nullopt;
+    obstacle = w.point_a;
+    body = w.point_b;
+  }
+  Vec3 n = body - obstacle;  // from the obstacle toward the body
   if (!(n.norm() > 0.0)) return std::nullopt;
   n.normalize();
   const double radius = context_.space.radius;
-  const Vec3 r = w.point_b - from.point;
+  const Vec3 r = body - from.point;
   // The motion toward the target as (Δc, r_max·ω); the body's witness point moves by
   // Δc + ω × r, whose component along −n closes the gap: project it out.
   Eigen::Matrix<double, 6, 1> u, j;
@@ -276,14 +293,15 @@ std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& targ
     const Mat3 rotation = exp_rotation(f * u.tail<3>() / radius) * from.pose.rotation;
     const Pose q = context_.pose_with_reference_at(rotation, from.point + move);
     if (!inside(q)) continue;
-    const double dq = check.clearance(q, margin + kNodeReach * step_);
+    const DistanceResult mq = check.measure(q, margin + kNodeReach * step_);
+    const double dq = mq.distance;
     if (dq <= margin) continue;
     if (s > 0.9 * (from.distance - margin)) {  // past the free ball: certified lazily
-      TreeNode node = make_node(q, dq, -1);
+      TreeNode node = make_node(q, mq);
       node.certified = false;
       return node;
     }
-    if (check.certify(from.pose, from.distance, q, dq).clear()) return make_node(q, dq, -1);
+    if (check.certify(from.pose, from.distance, q, dq).clear()) return make_node(q, mq);
   }
   return std::nullopt;
 }

@@ -47,6 +47,11 @@ struct TreeNode {
   /// (SBL, Sánchez & Latombe 2001).
   bool certified = true;
   bool dead = false;           ///< its edge, or an ancestor's, failed its certificate: ignored
+  /// The closest points (world) of the obstacles and the body when `distance` is exact: the
+  /// node's own query found them, and a slide from the node starts from them.
+  bool near_known = false;
+  Vec3 near_obstacle = Vec3::Zero();
+  Vec3 near_body = Vec3::Zero();
 };
 
 /// How the tree phase ended without a path.
@@ -87,6 +92,8 @@ class TreeSearch {
   struct Step;
   struct Attempt;
   TreeNode make_node(const Pose& pose, double distance, std::int32_t parent) const;
+  /// A node at a free pose measured by `d` (Checker::measure), with its closest points if exact.
+  TreeNode make_node(const Pose& pose, const DistanceResult& d) const;
   /// One step from `from` toward `target`: the new node (parent unset), or nullopt when even the
   /// shortest step is blocked. `reached` is set when the node is `target` itself.
   std::optional<TreeNode> step_toward(const TreeNode& from, const Pose& target, bool& reached) const;
