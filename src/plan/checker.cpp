@@ -36,7 +36,8 @@ double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) 
   return d.exact ? d.distance : std::numeric_limits<double>::infinity();
 }
 
-Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed) const {
+Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
+                             int max_queries) const {
   // Coherence: each query of the certificate starts from the previous one's closest pair.
   DistanceHint hint;
   auto bound = [&](const Pose& pose, double enough) {
@@ -45,8 +46,9 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
     return d.distance;
   };
   const Certificate c = certify_motion(motion(a, b), bound,
-                                       {.margin = margin_, .deadline = deadline_, .from_bound = da, .to_bound = db});
-  if (c.status == MotionStatus::refused_cap) ++cap_refusals_;
+                                       {.margin = margin_, .max_queries = max_queries, .deadline = deadline_,
+                                        .from_bound = da, .to_bound = db});
+  if (c.status == MotionStatus::refused_cap && max_queries == kMaxCertificateQueries) ++cap_refusals_;
   return c;
 }
 

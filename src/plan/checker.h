@@ -59,8 +59,11 @@ class Checker {
   double length(const Pose& a, const Pose& b) const { return motion_length(a, b, reference_, radius_); }
 
   /// Certificate of the straight motion a → b (distance > margin everywhere). `da`, `db` are
-  /// known lower bounds at the ends (negative: unknown). Refusals for the query cap are counted.
-  Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const;
+  /// known lower bounds at the ends (negative: unknown). Refusals for the query cap are counted
+  /// (`cap_refusals`) when the cap is the default one; a lower `max_queries` is a caller's
+  /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
+  Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
+                      int max_queries = kMaxCertificateQueries) const;
   /// Certified clear?
   bool clear(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const {
     return certify(a, da, b, db, relaxed).clear();

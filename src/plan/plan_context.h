@@ -41,10 +41,11 @@ struct PlanContext {
     if (distance) *distance = d;
     return d > check.margin();
   }
-  /// Certifies the motion a → b (ends' bounds da, db; negative: unknown), counting it.
-  bool certify(const Pose& a, double da, const Pose& b, double db) {
+  /// Certifies the motion a → b (ends' bounds da, db; negative: unknown), counting it; with
+  /// `max_queries`, a motion that needs more bisection queries is not clear (Checker::certify).
+  bool certify(const Pose& a, double da, const Pose& b, double db, int max_queries = kMaxCertificateQueries) {
     ++edges_checked;
-    return check.clear(a, da, b, db);
+    return check.certify(a, da, b, db, false, max_queries).clear();
   }
 };
 

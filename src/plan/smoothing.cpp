@@ -2,6 +2,15 @@
 #include "smoothing.h"
 
 namespace swept::detail {
+namespace {
+
+// A shortcut whose certificate needs more bisection queries than this grazes the margin for
+// most of its length: it is not taken, and the path keeps its waypoints there (measured on the
+// suite: the cubicles' smoothing 44 -> 18 ms, its path no longer and no closer to the
+// obstacles; no other problem's path changed but the spiral tube's).
+constexpr int kShortcutQueries = 256;
+
+}  // namespace
 
 void smooth(PlanContext& context, std::vector<Pose>& path, std::size_t fixed) {
   for (int round = 0; round < 2 && path.size() > fixed + 2; ++round) {
@@ -13,7 +22,7 @@ void smooth(PlanContext& context, std::vector<Pose>& path, std::size_t fixed) {
       while (lo < hi) {
         const std::size_t mid = (lo + hi + 1) / 2;
         if (context.over_budget()) return;  // the path as it was: every segment certified
-        if (context.certify(path[i], -1, path[mid], -1)) lo = mid;
+        if (context.certify(path[i], -1, path[mid], -1, kShortcutQueries)) lo = mid;
         else hi = mid - 1;
       }
       out.push_back(path[lo]);
