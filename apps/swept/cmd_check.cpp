@@ -108,7 +108,8 @@ void run(const CheckCliOptions& o) {
                        {"first_invalid", nullptr},
                        {"escape", nullptr},
                        {"segments", segments},
-                       {"distance_queries", r.distance_queries}};
+                       {"distance_queries", r.distance_queries},
+                       {"sweeps", r.sweeps}};
     if (r.first_bad_segment) {
       const SegmentCheck& s = r.segments[*r.first_bad_segment];
       doc["first_invalid"] = {{"segment", *r.first_bad_segment},

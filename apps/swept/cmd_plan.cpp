@@ -88,7 +88,7 @@ void run(const PlanCliOptions& o) {
                                         {"min_clearance_other_pairs", r.escape_clearance}}
                        : nlohmann::json(nullptr)},
         {"time_ms", {{"build", r.time_ms.build}, {"search", r.time_ms.search}, {"smooth", r.time_ms.smooth}, {"total", r.time_ms.total}}},
-        {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}}},
+        {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}, {"sweep", r.queries.sweep}}},
         {"path_hash", hex(r.path_hash)},
         {"unit", problem->unit},
         {"fitter", std::string(to_string(problem->build.fitter))},

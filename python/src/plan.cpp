@@ -139,7 +139,7 @@ pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::
   t["build"] = r.time_ms.build, t["search"] = r.time_ms.search, t["smooth"] = r.time_ms.smooth, t["total"] = r.time_ms.total;
   d["time_ms"] = t;
   pyb::dict q;
-  q["distance"] = r.queries.distance, q["proximity"] = r.queries.proximity;
+  q["distance"] = r.queries.distance, q["proximity"] = r.queries.proximity, q["sweep"] = r.queries.sweep;
   d["queries"] = q;
   d["path_hash"] = hex(r.path_hash);
   d["unit"] = problem.unit;

@@ -154,6 +154,7 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     }
   }
   out.distance_queries = check.distance_queries();
+  out.sweeps = check.sweeps();
   std::ostringstream os;
   if (inside) {
     out.valid = false;

@@ -59,7 +59,10 @@ class Checker {
   double length(const Pose& a, const Pose& b) const { return motion_length(a, b, reference_, radius_); }
 
   /// Certificate of the straight motion a → b (distance > margin everywhere). `da`, `db` are
-  /// known lower bounds at the ends (negative: unknown). Refusals for the query cap are counted
+  /// known lower bounds at the ends (negative: unknown). A pure translation whose certificate
+  /// runs past kSweepAfter queries (it grazes the margin: its pieces get short) is decided by
+  /// the exact sweep of the translation instead (`sweep_translation`), in one traversal; a
+  /// blocked one is then certified to the end, for where it is blocked. Refusals for the query cap are counted
   /// (`cap_refusals`) when the cap is the default one; a lower `max_queries` is a caller's
   /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
@@ -82,6 +85,10 @@ class Checker {
   void set_deadline(std::optional<Clock::time_point> t) { deadline_ = t; }
 
   std::uint64_t distance_queries() const { return distance_queries_.load(); }
+  /// Exact sweeps of pure translations run by certify().
+  std::uint64_t sweeps() const { return sweeps_.load(); }
+  /// Queries of a pure translation's certificate before the exact sweep decides it.
+  static constexpr int kSweepAfter = 64;
   /// Motions refused because certifying them needed more than kMaxCertificateQueries queries
   /// (or pieces below the parameter resolution): they graze the margin.
   std::uint64_t cap_refusals() const { return cap_refusals_.load(); }
@@ -102,6 +109,7 @@ class Checker {
   bool decide_blocked_ = false;
   mutable std::atomic<std::uint64_t> distance_queries_{0};
   mutable std::atomic<std::uint64_t> cap_refusals_{0};
+  mutable std::atomic<std::uint64_t> sweeps_{0};
 };
 
 }  // namespace swept::detail

@@ -82,6 +82,7 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
     r.edges_checked = context.edges_checked;
     r.queries.distance = check.distance_queries();
     r.queries.proximity = proximity_queries;
+    r.queries.sweep = check.sweeps();
     r.time_ms.total = context.elapsed_s() * 1e3;
     if (r.time_ms.search == 0.0) r.time_ms.search = r.time_ms.total;
     return r;
@@ -251,6 +252,7 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
   r.edges_checked = context.edges_checked;
   r.queries.distance = check.distance_queries() + final_check.distance_queries;
   r.queries.proximity = proximity_queries;
+  r.queries.sweep = check.sweeps() + final_check.sweeps;
   r.time_ms.total = context.elapsed_s() * 1e3;
   std::ostringstream os;
   os << "solved"

@@ -76,7 +76,7 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   for (const char* key : {"solved", "waypoints", "path_length", "min_clearance", "time_ms", "queries", "path_hash"})
     EXPECT_TRUE(doc.contains(key)) << key;
   for (const char* key : {"build", "search", "smooth", "total"}) EXPECT_TRUE(doc["time_ms"].contains(key)) << key;
-  for (const char* key : {"distance", "proximity"}) EXPECT_TRUE(doc["queries"].contains(key)) << key;
+  for (const char* key : {"distance", "proximity", "sweep"}) EXPECT_TRUE(doc["queries"].contains(key)) << key;
   EXPECT_TRUE(doc["solved"].get<bool>());
   EXPECT_GE(doc["min_clearance"].get<double>(), 0.1);
   auto path = read_path(dir / "path.json");

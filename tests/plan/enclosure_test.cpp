@@ -4,6 +4,8 @@
 #include "plan/plan_support.h"
 #include "swept/plan/check.h"
 
+#include <numbers>
+
 namespace swept {
 namespace {
 
@@ -91,12 +93,8 @@ using namespace swept::test;
 using scenes::add_box;
 
 // A cube (half width 3.5) held by its bounds at 1.5 above a floor: every motion it may make
-// slides along the floor 1.5 from it. With a clearance 1e-7 below that, each one grazes it: no
-// certificate fits in the query cap, and the answer names that limit, not the clock.
-TEST(PlannerLimits, GrazingMotionsAreRefusedAsResolution) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "under AddressSanitizer one refused certificate (200,000 queries) outlasts the time limit";
-#endif
+// slides along the floor 1.5 from it, with a clearance 1e-7 below that.
+scenes::GeneratedProblem cube_sliding_on_a_floor() {
   scenes::GeneratedProblem g;
   g.name = "grazing";
   add_box(g.obstacles.triangles, Vec3(-50, -50, -10), Vec3(50, 50, -5));  // floor
@@ -107,10 +105,37 @@ TEST(PlannerLimits, GrazingMotionsAreRefusedAsResolution) {
   g.problem.rotation = RotationMode::none;
   g.problem.bounds = Aabb{Vec3(-45, -2, 0), Vec3(45, 2, 0)};
   g.problem.time_limit = 8;  // one refused certificate takes about a second here (release build)
+  return g;
+}
+
+// The cube also turns a quarter about the vertical on its way: no motion is a pure translation,
+// each one grazes the floor, no certificate fits in the query cap, and the answer names that
+// limit, not the clock.
+TEST(PlannerLimits, GrazingMotionsAreRefusedAsResolution) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "under AddressSanitizer one refused certificate (200,000 queries) outlasts the time limit";
+#endif
+  scenes::GeneratedProblem g = cube_sliding_on_a_floor();
+  g.problem.goal->rotation = Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitZ()).toRotationMatrix();
+  g.problem.rotation = RotationMode::limits;
+  g.problem.rotation_limits = {{{0.0, 0.0}, {0.0, 0.0}, {0.0, std::numbers::pi / 2}}};
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   EXPECT_EQ(r.status, PlanStatus::no_path_resolution) << r.message;
   EXPECT_NE(r.message.find("graze"), std::string::npos) << r.message;
+}
+
+// Without the turn every motion is a pure translation, which the exact sweep decides however
+// close it grazes (docs/planner.md, "Certificates"): the straight pull along the floor, whose
+// distance is 1.5 all along (the floor is flat), 1e-7 above the clearance.
+TEST(PlannerLimits, AGrazingTranslationIsSolvedExactly) {
+  const scenes::GeneratedProblem g = cube_sliding_on_a_floor();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  EXPECT_EQ(r.path.poses.size(), 2u);
+  EXPECT_NEAR(r.min_clearance, 1.5, 1e-9);
+  EXPECT_GE(r.queries.sweep, 2u);  // the search's and the final certification's
 }
 
 TEST(PlannerLimits, BoundsFarBeyondTheSceneAreBadInput) {

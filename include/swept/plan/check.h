@@ -54,6 +54,7 @@ struct PathCheckResult {
   std::size_t exempt_pairs = 0;
   double escape_clearance = std::numeric_limits<double>::infinity();  ///< non-exempt pairs, escape
   std::uint64_t distance_queries = 0;
+  std::uint64_t sweeps = 0;  ///< exact sweeps of grazing pure translations (docs/planner.md)
 };
 
 /// Certifies every segment of `path` in the problem's scene with the certificate the planner

@@ -116,11 +116,12 @@ struct PlanResult {
   struct {
     double build = 0, search = 0, smooth = 0, total = 0;
   } time_ms;
-  /// Queries the planner issued, the final certification included: distance queries, and
-  /// proximity-pair queries (the contact pairs of a start in contact). It issues no collide or
-  /// tolerance queries.
+  /// Queries the planner issued, the final certification included: distance queries,
+  /// proximity-pair queries (the contact pairs of a start in contact), and exact sweeps of pure
+  /// translations that graze the margin (docs/planner.md, "Certificates"). It issues no collide
+  /// or tolerance queries.
   struct {
-    std::uint64_t distance = 0, proximity = 0;
+    std::uint64_t distance = 0, proximity = 0, sweep = 0;
   } queries;
   std::uint64_t path_hash = 0;  ///< `path_hash(path)`: equal paths, equal hashes
   int level = 0;                ///< the grid level the path was found at (-1: straight-line phase; kTreeLevel: the trees)
