@@ -324,37 +324,49 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint6
   return out;
 }
 
-TreeSearch::Attempt TreeSearch::seed_attempt(int grow, int orientation, int axis) const {
-  // From the root: turn in place to a lattice orientation of the root's, then pull along a
-  // world axis toward the bounds, step after step (no slides: the move stays on its line).
-  Attempt out;
+// Steps from `at` (index `parent`, encoded as in Attempt) toward `leg` along its line (no
+// slides), appending the nodes to `chain`; true when the leg's end is reached.
+bool TreeSearch::leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain,
+                     std::size_t& edges) const {
+  for (int k = 0; k < kConnectSteps && !context_.out_of_time(); ++k) {
+    bool reached = false;
+    std::optional<TreeNode> next = step_toward(at, leg, reached);
+    if (!next) return reached;
+    edges += next->certified;
+    next->parent = parent;
+    parent = -2 - static_cast<std::int32_t>(chain.size());
+    chain.push_back(*next);
+    at = *next;
+    if (reached) return true;
+  }
+  return false;
+}
+
+TreeSearch::Turn TreeSearch::turn(int grow, int orientation) const {
+  Turn out;
   const TreeNode& root = trees_[grow].front();
   const Pose turned = context_.pose_with_reference_at(lattice_rotation(static_cast<std::uint64_t>(orientation)) * root.pose.rotation, root.point);
-  Vec3 u = Vec3::Zero();
-  u[axis / 2] = axis % 2 == 0 ? 1.0 : -1.0;
-  const Aabb& bounds = context_.space.bounds;
-  const double room = u[axis / 2] > 0 ? bounds.max[axis / 2] - root.point[axis / 2] : root.point[axis / 2] - bounds.min[axis / 2];
-  const Pose pulled = context_.pose_with_reference_at(turned.rotation, root.point + room * u);
-  std::int32_t parent = 0;
-  TreeNode at = root;
-  const std::array<Pose, 2> legs{turned, pulled};
-  for (const Pose& leg : legs) {
-    bool done = false;
-    for (int k = 0; k < kConnectSteps && !done && !context_.out_of_time(); ++k) {
-      bool reached = false;
-      std::optional<TreeNode> next = step_toward(at, leg, reached);
-      if (!next) {
-        done = reached;
-        break;
-      }
-      out.edges += next->certified;
-      next->parent = parent;
-      parent = -2 - static_cast<std::int32_t>(out.grown.size());
-      out.grown.push_back(*next);
-      at = *next;
-      done = reached;
-    }
-    if (!done) break;  // the turn or the pull stopped short: what grew stays
+  out.rotation = turned.rotation;
+  out.done = leg(root, 0, turned, out.nodes, out.edges);
+  return out;
+}
+
+TreeSearch::Attempt TreeSearch::seed_attempt(int grow, const Turn& turn, int axis) const {
+  // From the root: the turn in place to a lattice orientation of the root's, then a pull along
+  // a world axis toward the bounds, step after step (no slides: the move stays on its line).
+  Attempt out;
+  out.grown = turn.nodes;
+  out.edges = turn.edges;
+  if (turn.done) {  // else the turn stopped short: what grew stays
+    const TreeNode& root = trees_[grow].front();
+    const TreeNode& at = out.grown.empty() ? root : out.grown.back();
+    Vec3 u = Vec3::Zero();
+    u[axis / 2] = axis % 2 == 0 ? 1.0 : -1.0;
+    const Aabb& bounds = context_.space.bounds;
+    const double room = u[axis / 2] > 0 ? bounds.max[axis / 2] - root.point[axis / 2] : root.point[axis / 2] - bounds.min[axis / 2];
+    const Pose pulled = context_.pose_with_reference_at(turn.rotation, root.point + room * u);
+    const std::int32_t parent = out.grown.empty() ? 0 : -2 - static_cast<std::int32_t>(out.grown.size() - 1);
+    leg(at, parent, pulled, out.grown, out.edges);
   }
   // The other tree does not reach for a seed: the seeds of both trees lie on the same few lines,
   // and the samples' reaching connects them (reaching for every seed cost the house and the
@@ -494,10 +506,20 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
     for (int i = seeds; i < kRound; ++i) targets[i] = sample(++sample_index_);
     const std::uint64_t seed_first = seed_index_[grow];
     seed_index_[grow] += static_cast<std::uint64_t>(seeds);
+    // Seed k turns to orientation k / 6 and pulls along axis k % 6: the turns this round's
+    // seeds need and no earlier one made, first (each depends on the root alone).
+    std::vector<int> new_turns;
+    for (int i = 0; i < seeds; ++i) {
+      const int o = static_cast<int>((seed_first + static_cast<std::uint64_t>(i)) / 6 % 24);
+      if (!turns_[grow][o] && std::find(new_turns.begin(), new_turns.end(), o) == new_turns.end()) new_turns.push_back(o);
+    }
+    std::vector<Turn> made(new_turns.size());
+    tbb::parallel_for(std::size_t{0}, new_turns.size(), [&](std::size_t j) { made[j] = turn(grow, new_turns[j]); });
+    for (std::size_t j = 0; j < new_turns.size(); ++j) turns_[grow][new_turns[j]] = std::move(made[j]);
     tbb::parallel_for(0, kRound, [&](int i) {
       if (i < seeds) {
         const std::uint64_t k = seed_first + static_cast<std::uint64_t>(i);  // orientation, axis
-        attempts[i] = seed_attempt(grow, static_cast<int>(k / 6 % 24), static_cast<int>(k % 6));
+        attempts[i] = seed_attempt(grow, *turns_[grow][k / 6 % 24], static_cast<int>(k % 6));
       } else {
         attempts[i] = attempt(grow, targets[i], first + static_cast<std::uint64_t>(i - seeds));
       }

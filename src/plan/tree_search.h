@@ -107,10 +107,22 @@ class TreeSearch {
   std::optional<TreeNode> slide(const TreeNode& from, const Pose& target) const;
   /// Grows tree `grow` toward sample `index` (`target`), and the other tree toward what grew.
   Attempt attempt(int grow, const Pose& target, std::uint64_t index) const;
-  /// A seed of tree `grow`: from its root, a turn in place to lattice orientation
-  /// `orientation` (`lattice_rotation`) of the root's rotation, then a pull along world axis
+  /// The turn in place of tree `grow`'s root to lattice orientation `orientation`
+  /// (`lattice_rotation`) of its rotation, step after step, as far as it is free: the first leg
+  /// of the six seeds of that orientation, computed once for all six.
+  struct Turn {
+    std::vector<TreeNode> nodes;  ///< parents encoded as in Attempt (the first one's: the root)
+    std::size_t edges = 0;        ///< motions certified
+    bool done = false;            ///< the turn reached the orientation
+    Mat3 rotation = Mat3::Identity();  ///< the orientation
+  };
+  Turn turn(int grow, int orientation) const;
+  /// A seed of tree `grow`: from its root, the `turn` in place, then a pull along world axis
   /// `axis` (+x, −x, +y, −y, +z, −z) toward the bounds, as far as it is free.
-  Attempt seed_attempt(int grow, int orientation, int axis) const;
+  Attempt seed_attempt(int grow, const Turn& turn, int axis) const;
+  /// Steps from `at` (index `parent`, encoded as in Attempt) toward `leg` along its line, no
+  /// slides, appending the nodes to `chain`; true when the leg's end is reached.
+  bool leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain, std::size_t& edges) const;
   /// The other tree reaches for the last node `out` grew, step after step (at most `max_steps`).
   void reach_for(int grow, Attempt& out, int max_steps) const;
   /// Seeds per tree with a root of its own: 24 orientations × 6 axes.
@@ -141,6 +153,7 @@ class TreeSearch {
   std::array<std::vector<TreeNode>, 2> trees_;
   std::uint64_t sample_index_ = 0;
   std::array<std::uint64_t, 2> seed_index_{};  ///< seeds done, per tree
+  std::array<std::array<std::optional<Turn>, 24>, 2> turns_;  ///< per tree and orientation, once computed
   std::uint64_t lazy_certified_ = 0, lazy_cut_ = 0;
 };
 
