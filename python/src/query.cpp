@@ -153,17 +153,18 @@ pyb::dict motion_py(const PyBvh& a, const PyBvh& b, const pyb::handle& poses_a_i
   const auto n = static_cast<pyb::ssize_t>(k);
   auto free = new_array<bool>({n});
   auto t_blocked = new_array<double>({n}), at_block = new_array<double>({n}), min_d = new_array<double>({n});
-  auto queries = new_array<std::int64_t>({n});
+  auto queries = new_array<std::int64_t>({n}), sweeps = new_array<std::int64_t>({n});
   bool* f = free.mutable_data();
   double *tb = t_blocked.mutable_data(), *ab = at_block.mutable_data(), *md = min_d.mutable_data();
-  std::int64_t* q = queries.mutable_data();
+  std::int64_t *q = queries.mutable_data(), *sw = sweeps.mutable_data();
   parallel_for(k, threads, [&](std::size_t i) {
     const MotionResult r = swept::motion_clearance(tree(a), pa[i], tree(b), {from[i], to[i], reference, radius}, request);
     f[i] = r.clear(), tb[i] = r.t_blocked, ab[i] = r.distance_at_block, md[i] = r.min_distance, q[i] = r.distance_queries;
+    sw[i] = r.sweeps;
   });
   pyb::dict out;
   out["free"] = free, out["t_blocked"] = t_blocked, out["distance_at_block"] = at_block, out["min_distance"] = min_d;
-  out["distance_queries"] = queries;
+  out["distance_queries"] = queries, out["sweeps"] = sweeps;
   auto ref = new_array<double>({3});
   for (int c = 0; c < 3; ++c) ref.mutable_data()[c] = reference[c];
   out["reference"] = ref;

@@ -38,23 +38,6 @@ double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) 
 
 Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
                              int max_queries) const {
-  // A pure translation that grazes the margin: the certificate's pieces shrink with the gap
-  // (a face sliding along another at a hair above the margin needs thousands of them), while
-  // the sweep bounds each node pair once for the whole motion. Short of that, the certificate
-  // is cheaper (it stops at a blocked end or decides a free motion in a few queries). The
-  // escape's exempt pairs (relaxed) stay with the certificate.
-  if (!relaxed && a.rotation == b.rotation && max_queries > kSweepAfter) {
-    const Certificate first = certify(a, da, b, db, false, kSweepAfter);
-    if (first.status != MotionStatus::refused_cap) return first;
-    ++sweeps_;
-    const SweepResult sweep = sweep_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, a,
-                                                {.translation = b.translation - a.translation, .margin = margin_});
-    if (sweep.clear) {
-      Certificate c = first;
-      c.status = MotionStatus::clear;
-      return c;
-    }
-  }
   // Coherence: each query of the certificate starts from the previous one's closest pair.
   DistanceHint hint;
   auto bound = [&](const Pose& pose, double enough) {
@@ -62,9 +45,24 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
     if (d.hint.valid()) hint = d.hint;
     return d.distance;
   };
-  const Certificate c = certify_motion(motion(a, b), bound,
-                                       {.margin = margin_, .max_queries = max_queries, .deadline = deadline_,
-                                        .from_bound = da, .to_bound = db});
+  CertificateOptions options{.margin = margin_, .max_queries = max_queries, .deadline = deadline_,
+                             .from_bound = da, .to_bound = db};
+  // A pure translation that grazes the margin: the certificate's pieces shrink with the gap
+  // (a face sliding along another at a hair above the margin needs thousands of them), while
+  // the sweep bounds each node pair once for the whole motion. Short of that, the certificate
+  // is cheaper (it stops at a blocked end or decides a free motion in a few queries), and a
+  // blocked translation goes on with it, for where it is blocked. The escape's exempt pairs
+  // (relaxed) stay with the certificate.
+  if (!relaxed && a.rotation == b.rotation && max_queries > kSweepAfter) {
+    options.decide_after = kSweepAfter;
+    options.decide = [&] {
+      ++sweeps_;
+      return sweep_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, a,
+                               {.translation = b.translation - a.translation, .margin = margin_})
+          .clear;
+    };
+  }
+  const Certificate c = certify_motion(motion(a, b), bound, options);
   if (c.status == MotionStatus::refused_cap && max_queries == kMaxCertificateQueries) ++cap_refusals_;
   return c;
 }

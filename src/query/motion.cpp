@@ -78,8 +78,16 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
     const double length = total * (p.t1 - p.t0);
     if (length < (p.d0 - m) + (p.d1 - m)) continue;  // certified free
     // Too many pieces, or pieces too short to split, mean the motion grazes the margin:
-    // refuse rather than loop.
-    if (++bisections > options.max_queries || p.t1 - p.t0 < 1e-9) {
+    // ask the exact second opinion if there is one, else refuse rather than loop.
+    const bool capped = ++bisections > options.max_queries || p.t1 - p.t0 < 1e-9;
+    if ((capped || bisections > options.decide_after) && options.decide && !out.decided) {
+      out.decided = true;
+      if (options.decide()) {
+        out.status = MotionStatus::clear;
+        return out;
+      }
+    }
+    if (capped) {
       out.status = MotionStatus::refused_cap;
       return out;
     }
@@ -113,7 +121,20 @@ MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, co
     out.stats.triangle_tests += d.stats.triangle_tests;
     return d.distance;
   };
-  const Certificate c = certify_motion(motion, tree_distance, {.margin = request.margin, .max_queries = request.max_queries});
+  CertificateOptions options{.margin = request.margin, .max_queries = request.max_queries};
+  if (request.sweep_after >= 0 && motion.from.rotation == motion.to.rotation) {
+    options.decide_after = request.sweep_after;
+    options.decide = [&] {
+      ++out.sweeps;
+      const SweepResult s = sweep_translation(a, pose_a, b, motion.from,
+                                              {.translation = motion.to.translation - motion.from.translation,
+                                               .margin = request.margin});
+      out.stats.bv_tests += s.stats.bv_tests;
+      out.stats.triangle_tests += s.stats.triangle_tests;
+      return s.clear;
+    };
+  }
+  const Certificate c = certify_motion(motion, tree_distance, options);
   out.status = c.status;
   out.t_blocked = c.t_blocked;
   out.distance_at_block = c.distance_at_block;

@@ -59,6 +59,8 @@ TEST(Checker, AGrazingTranslationOverABumpIsBlockedWhereTheBumpIs) {
   const Certificate c = check.certify(g.problem.start, -1, *g.problem.goal, -1);
   ASSERT_EQ(c.status, MotionStatus::blocked);
   EXPECT_EQ(check.sweeps(), 1u);
+  // The bisection went on past the sweep: every query the checker made is the certificate's.
+  EXPECT_EQ(check.distance_queries(), static_cast<std::uint64_t>(c.distance_queries));
   const double side = std::sqrt(kMargin * kMargin - (kMargin + kGap - 0.02) * (kMargin + kGap - 0.02));
   EXPECT_GE(c.t_blocked, (4.9 - 1.5 - side + 10) / 20 - 1e-9);
   EXPECT_LE(c.t_blocked, (5.1 + 1.5 + side + 10) / 20 + 1e-9);

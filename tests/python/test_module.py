@@ -232,6 +232,13 @@ def test_motion_clearance():
     assert m.radius == pytest.approx(np.sqrt(3) * 0.25)
     with pytest.raises(swept.Error, match="smaller than the body's radius"):
         swept.motion_clearance(a, b, None, start, end, radius=0.1)
+    # Sliding over A's top face 1e-12 above the margin (by construction: B's bottom at z = 1.5,
+    # A's top at z = 1): a bisection needs pieces ~1e-12 long; the exact sweep decides it.
+    graze_from = np.array([[-3, 0, 1.5, 0, 0, 0, 1]], dtype=float)
+    graze_to = np.array([[3, 0, 1.5, 0, 0, 0, 1]], dtype=float)
+    g = swept.motion_clearance(a, b, None, graze_from, graze_to, margin=0.5 - 1e-12)
+    assert g.free.tolist() == [True] and g.sweeps.tolist() == [1] and g.distance_queries[0] <= 66
+    assert m.sweeps.tolist() == [0, 0]
 
 
 # ---- planning ----------------------------------------------------------------------------------------

@@ -174,8 +174,10 @@ TEST(MotionClearance, QueryCapMeansRefused) {
   // Passing the box's top face 1e-12 above the margin: the bisection needs pieces about
   // 1e-12 long over the face, far more than 50 queries; only the cap stops it.
   const Motion grazing{Pose::from_translation({-3, 1.3, 0}), Pose::from_translation({3, 1.3, 0}), Vec3::Zero(), radius};
-  const MotionResult m = motion_clearance(a, Pose::identity(), b, grazing, {.margin = 0.1 - 1e-12, .max_queries = 50});
+  const MotionResult m = motion_clearance(a, Pose::identity(), b, grazing,
+                                          {.margin = 0.1 - 1e-12, .max_queries = 50, .sweep_after = -1});
   EXPECT_EQ(m.status, MotionStatus::refused_cap);
+  EXPECT_EQ(m.sweeps, 0);
   EXPECT_FALSE(m.clear());
   EXPECT_LE(m.distance_queries, 52);  // 50 bisections and the two ends
   // Above the pass's distance the first midpoint (over the face, 0.1 away) blocks.
@@ -183,6 +185,57 @@ TEST(MotionClearance, QueryCapMeansRefused) {
   EXPECT_EQ(too_close.status, MotionStatus::blocked);
   EXPECT_EQ(too_close.t_blocked, 0.5);
   EXPECT_NEAR(too_close.distance_at_block, 0.1, 1e-12);
+}
+
+TEST(MotionClearance, AGrazingTranslationIsSwept) {
+  // The pass of QueryCapMeansRefused, 1e-12 above the margin all along the box's top face: the
+  // bisection would need pieces ~1e-12 long (it refuses at the parameter resolution); the exact
+  // sweep of the translation decides it clear after the first 64 bisection queries.
+  const Bvh a = build(test::box_triangles({-1, -1, -1}, {1, 1, 1}));
+  const Bvh b = build(test::box_triangles({-0.2, -0.2, -0.2}, {0.2, 0.2, 0.2}));
+  const Motion grazing{Pose::from_translation({-3, 1.3, 0}), Pose::from_translation({3, 1.3, 0}), Vec3::Zero(),
+                       motion_radius(b, Vec3::Zero())};
+  const MotionResult m = motion_clearance(a, Pose::identity(), b, grazing, {.margin = 0.1 - 1e-12});
+  EXPECT_TRUE(m.clear());
+  EXPECT_EQ(m.sweeps, 1);
+  EXPECT_EQ(m.distance_queries, 66);  // the two ends and 64 midpoints
+  EXPECT_GE(dense_minimum(a, b, grazing.from, grazing.to, Vec3::Zero(), 2000), 0.1 - 1e-12);
+  // Without the sweep the certificate gives up at the parameter resolution.
+  EXPECT_EQ(motion_clearance(a, Pose::identity(), b, grazing, {.margin = 0.1 - 1e-12, .sweep_after = -1}).status,
+            MotionStatus::refused_cap);
+  // Rotating by a hair is not a translation: no sweep.
+  Motion turning = grazing;
+  turning.to.rotation = Eigen::AngleAxisd(1e-9, Vec3::UnitX()).toRotationMatrix();
+  EXPECT_EQ(motion_clearance(a, Pose::identity(), b, turning, {.margin = 0.1 - 1e-12, .max_queries = 200}).sweeps, 0);
+}
+
+TEST(MotionClearance, AGrazingTranslationOverABumpIsBlockedOnceWhereTheBumpIs) {
+  // The same pass 1e-4 above the margin (0.0999), over a bump on the face, x ∈ [0.3, 0.4],
+  // 0.02 high: B (half width 0.2) is within the margin of it for centres
+  // x ∈ [0.3 − 0.2 − s, 0.4 + 0.2 + s], s = √(0.0999² − 0.08²), and the motion runs
+  // x = −3 → 3, t = (x + 3) / 6. The bisection spends its first 64 queries grazing the face
+  // left of the bump; the sweep finds the motion blocked; the bisection goes on from there
+  // (it does not start again) to where.
+  std::vector<Triangle> tris = test::box_triangles({-1, -1, -1}, {1, 1, 1});
+  const std::vector<Triangle> bump = test::box_triangles({0.3, 1, -1}, {0.4, 1.02, 1});
+  tris.insert(tris.end(), bump.begin(), bump.end());
+  const Bvh a = build(tris);
+  const Bvh b = build(test::box_triangles({-0.2, -0.2, -0.2}, {0.2, 0.2, 0.2}));
+  const Motion grazing{Pose::from_translation({-3, 1.3, 0}), Pose::from_translation({3, 1.3, 0}), Vec3::Zero(),
+                       motion_radius(b, Vec3::Zero())};
+  const double margin = 0.0999;
+  const MotionResult m = motion_clearance(a, Pose::identity(), b, grazing, {.margin = margin});
+  ASSERT_EQ(m.status, MotionStatus::blocked);
+  EXPECT_EQ(m.sweeps, 1);
+  const double s = std::sqrt(margin * margin - 0.08 * 0.08);
+  EXPECT_GE(m.t_blocked, (0.3 - 0.2 - s + 3) / 6 - 1e-12);
+  EXPECT_LE(m.t_blocked, (0.4 + 0.2 + s + 3) / 6 + 1e-12);
+  EXPECT_LE(m.distance_at_block, margin);
+  // The same verdict and the same queries as the certificate alone: the sweep added none.
+  const MotionResult plain = motion_clearance(a, Pose::identity(), b, grazing, {.margin = margin, .sweep_after = -1});
+  EXPECT_EQ(plain.status, MotionStatus::blocked);
+  EXPECT_EQ(plain.t_blocked, m.t_blocked);
+  EXPECT_EQ(plain.distance_queries, m.distance_queries);
 }
 
 // One certificate core: a hand-made distance function (a wall at x = 2, the body a point)

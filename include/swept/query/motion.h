@@ -63,6 +63,12 @@ struct CertificateOptions {
   /// Known lower bounds on the distance at `from` / `to` (negative: unknown, queried).
   double from_bound = -1.0;
   double to_bound = -1.0;
+  /// An exact second opinion for motions that graze the margin (`sweep_translation` for a pure
+  /// translation): asked once, when the bisection passes `decide_after` queries or is about to
+  /// give up, whichever comes first. true ends the certificate clear; false lets the bisection
+  /// go on from where it is, to find where the motion is blocked. Empty: never asked.
+  std::function<bool()> decide;
+  int decide_after = 64;
 };
 
 struct Certificate {
@@ -71,6 +77,7 @@ struct Certificate {
   double distance_at_block = 0.0; ///< blocked: the distance there (≤ margin)
   double min_distance = std::numeric_limits<double>::infinity();  ///< smallest bound seen
   int distance_queries = 0;       ///< calls of the distance function, ends included
+  bool decided = false;           ///< CertificateOptions::decide was asked
 
   bool clear() const { return status == MotionStatus::clear; }
 };
@@ -89,6 +96,9 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
 struct MotionRequest {
   double margin = 0.0;  ///< required distance along the whole motion
   int max_queries = kMaxCertificateQueries;  ///< cap on the bisection queries (then refused)
+  /// A pure translation whose certificate passes this many bisection queries (it grazes the
+  /// margin) is decided by `sweep_translation` in one traversal; negative: never.
+  int sweep_after = 64;
 };
 struct MotionResult {
   MotionStatus status = MotionStatus::refused_cap;
@@ -96,13 +106,15 @@ struct MotionResult {
   double distance_at_block = 0.0;
   double min_distance = std::numeric_limits<double>::infinity();  ///< smallest distance bound seen
   int distance_queries = 0;
+  int sweeps = 0;  ///< exact sweeps of the translation run (0 or 1)
   QueryStats stats;
 
   /// Certified: distance > margin on the whole continuous motion.
   bool clear() const { return status == MotionStatus::clear; }
 };
 /// Is the motion of B (`motion`, see `interpolate`) against A at `pose_a` clear of A by more
-/// than the margin everywhere? `certify_motion` with the tree distance. Contact (distance 0)
+/// than the margin everywhere? `certify_motion` with the tree distance; a grazing pure
+/// translation is decided by `sweep_translation` (MotionRequest::sweep_after). Contact (distance 0)
 /// always blocks, so margin 0 asks for a collision-free motion. Distances are between the
 /// triangle surfaces (a body wholly inside a closed mesh is not in contact).
 MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
