@@ -51,14 +51,18 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
   // (a face sliding along another at a hair above the margin needs thousands of them), while
   // the sweep bounds each node pair once for the whole motion. Short of that, the certificate
   // is cheaper (it stops at a blocked end or decides a free motion in a few queries), and a
-  // blocked translation goes on with it, for where it is blocked. The escape's exempt pairs
-  // (relaxed) stay with the certificate.
-  if (!relaxed && a.rotation == b.rotation && max_queries > kSweepAfter) {
+  // blocked translation goes on with it, for where it is blocked. An escape (relaxed) leaves
+  // out the same exempt pairs in the sweep as in its distances.
+  const std::function<bool(std::uint32_t, std::uint32_t)> exempt = [this](std::uint32_t o, std::uint32_t t) {
+    return exempt_.contains(o, t);
+  };
+  if (a.rotation == b.rotation && max_queries > kSweepAfter) {
     options.decide_after = kSweepAfter;
     options.decide = [&] {
       ++sweeps_;
       return sweep_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, a,
-                               {.translation = b.translation - a.translation, .margin = margin_})
+                               {.translation = b.translation - a.translation, .margin = margin_,
+                                .exclude_if = relaxed ? &exempt : nullptr})
           .clear;
     };
   }

@@ -2,6 +2,7 @@
 // escape_test.cpp runs the same rules through plan() end to end.
 #include "plan/escape.h"
 #include "plan/phase_support.h"
+#include "swept/geometry/distance.h"
 
 #include <algorithm>
 
@@ -17,11 +18,10 @@ using scenes::GeneratedProblem;
 // every pair within 0.03 is exempt, the bottom's and the walls'. The walls keep 0.02 > 0.01
 // along a lift, so the escape is straight up, to the first step of the ladder
 // s_k = 10^-3·size·1.5^k whose pose clears the bottom by more than 0.01.
-GeneratedProblem peg_on_the_bottom() {
+GeneratedProblem peg_on_the_bottom(double h = 1.02) {
   GeneratedProblem g;
   g.name = "peg_on_the_bottom";
   auto& o = g.obstacles.triangles;
-  const double h = 1.02;
   add_box(o, Vec3(-3, -3, -1), Vec3(3, 3, 0));  // bottom
   add_box(o, Vec3(h, -3, 0), Vec3(3, 3, 3));    // walls
   add_box(o, Vec3(-3, -3, 0), Vec3(-h, 3, 3));
@@ -77,6 +77,42 @@ TEST(EscapePhase, PegLeavesStraightUpToTheFirstClearPose) {
   EXPECT_NEAR(escape->translation.y(), 0.0, 1e-15);
   // The escape segment satisfies the rules of docs/planner.md, checked by the oracle.
   check_path_independently(rig.scene, rig.problem(), Path{{rig.problem().start, *escape}});
+}
+
+TEST(EscapePhase, APegThatGrazesItsWallsLeavesByTheSweep) {
+  // The walls 2e-10 above the clearance (0.01), the contact tolerance 1e-10: only the bottom's
+  // pairs are exempt (distance 0), the walls' are not (0.01 + 2e-10 > 0.01 + 1e-10) and keep
+  // 2e-10 above the margin all the way up. The lift of PegLeavesStraightUpToTheFirstClearPose
+  // (0.0141 long) would need bisection pieces some 10^-10 long — past the certificate's cap;
+  // the exact sweep of the translation, with the bottom's pairs left out, clears it.
+  GeneratedProblem g = peg_on_the_bottom(1.0 + 0.01 + 2e-10);
+  g.problem.contact_tolerance = 1e-10;
+  PhaseRig rig(g);
+  exempt_start_pairs(rig);
+  ASSERT_GT(rig.check.exempt().size(), 0u);
+  for (const ContactPair& p : rig.check.exempt().pairs)  // the bottom's top face only
+    EXPECT_EQ(triangle_distance(rig.scene.obstacles.triangles[p.triangle_a], rig.scene.body.triangles[p.triangle_b]).distance,
+              0.0);
+  const std::optional<Pose> escape = detail::escape_from_contact(rig.context, g.problem.start);
+  ASSERT_TRUE(escape);
+  EXPECT_GE(rig.check.sweeps(), 1u);
+  EXPECT_EQ(rig.check.cap_refusals(), 0u);
+  EXPECT_EQ(escape->rotation, Mat3::Identity());
+  EXPECT_NEAR(escape->translation.z(), 1.5e-3 * rig.context.scene_size(), 1e-15);
+  EXPECT_EQ(escape->translation.x(), 0.0);
+  EXPECT_EQ(escape->translation.y(), 0.0);
+  // The oracle's own certificate bisects too (it would refuse at its cap): checked instead pair
+  // by pair with its exact minimum over the translation — every pair outside the exemption
+  // stays above the clearance along the whole lift.
+  const Eigen::Vector3d lift = escape->translation;
+  double closest = std::numeric_limits<double>::infinity();
+  for (const oracle::Tri& o : oracle_triangles(rig.scene.obstacles))
+    for (const oracle::Tri& b : oracle_triangles(rig.scene.body)) {
+      if (oracle::triangle_distance(o, b) < g.problem.clearance + g.problem.contact_tolerance) continue;  // exempt
+      closest = std::min(closest, oracle::translation_minimum(o, b, lift));
+    }
+  EXPECT_GT(closest, g.problem.clearance);
+  EXPECT_NEAR(closest, g.problem.clearance + 2e-10, 1e-12);
 }
 
 TEST(EscapePhase, NoEscapeWithoutExemption) {
