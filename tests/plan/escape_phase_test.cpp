@@ -3,6 +3,7 @@
 #include "plan/escape.h"
 #include "plan/phase_support.h"
 #include "swept/geometry/distance.h"
+#include "swept/plan/check.h"
 
 #include <algorithm>
 
@@ -113,6 +114,15 @@ TEST(EscapePhase, APegThatGrazesItsWallsLeavesByTheSweep) {
     }
   EXPECT_GT(closest, g.problem.clearance);
   EXPECT_NEAR(closest, g.problem.clearance + 2e-10, 1e-12);
+  // The plan starts with that escape, and `swept check`'s checker certifies it the same way.
+  const PlanResult r = plan(g.problem, rig.scene);
+  ASSERT_TRUE(r.solved()) << r.message;
+  EXPECT_EQ(r.path.poses[1].translation, escape->translation);
+  const PathCheckResult c = check_path(g.problem, rig.scene, r.path);
+  EXPECT_TRUE(c.valid) << c.message;
+  EXPECT_EQ(c.escape_segments, 1u);
+  EXPECT_GE(c.sweeps, 1u);
+  EXPECT_NEAR(c.escape_clearance, closest, 1e-12);
 }
 
 TEST(EscapePhase, NoEscapeWithoutExemption) {
