@@ -86,7 +86,7 @@ class MotionResult(NamedTuple):
     distance_at_block: np.ndarray   #: (K,) float64
     min_distance: np.ndarray        #: (K,) float64, smallest distance bound seen
     distance_queries: np.ndarray    #: (K,) int64
-    sweeps: np.ndarray              #: (K,) int64, exact sweeps of a grazing pure translation (0 or 1)
+    sweeps: np.ndarray              #: (K,) int64, exact sweeps of a grazing translation (0 or 1)
     reference: np.ndarray           #: (3,) the body-frame point the motion interpolates about
     radius: float                   #: B's radius about the reference
 
@@ -201,7 +201,7 @@ def motion_clearance(a: BVH, b: BVH, poses_a: Any, poses_from: Any, poses_to: An
     distance >= margin from A at poses_a[k] along the whole continuous motion? Never says free
     when it is not. reference: B's body-frame point (3,) the motion interpolates about (default:
     the centre of B's bounding box, as the planner); radius: B's radius about it (default:
-    computed; a smaller one is refused). A pure translation that grazes the margin (more than
+    computed; a smaller one is refused). A translation that grazes the margin (more than
     64 bisection queries) is decided by the exact sweep of the translation (`sweeps`)."""
     _check_tree(a, "a"), _check_tree(b, "b")
     return MotionResult(**_swept._motion_clearance(a, b, poses_a, poses_from, poses_to, margin, reference, radius,

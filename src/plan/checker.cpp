@@ -47,26 +47,31 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
   };
   CertificateOptions options{.margin = margin_, .max_queries = max_queries, .deadline = deadline_,
                              .from_bound = da, .to_bound = db};
-  // A pure translation that grazes the margin: the certificate's pieces shrink with the gap
-  // (a face sliding along another at a hair above the margin needs thousands of them), while
-  // the sweep bounds each node pair once for the whole motion. Short of that, the certificate
-  // is cheaper (it stops at a blocked end or decides a free motion in a few queries), and a
-  // blocked translation goes on with it, for where it is blocked. An escape (relaxed) leaves
-  // out the same exempt pairs in the sweep as in its distances.
+  // A translation that grazes the margin: the certificate's pieces shrink with the gap (a face
+  // sliding along another at a hair above the margin needs thousands of them), while the sweep
+  // bounds each node pair once for the whole motion. Short of that, the certificate is cheaper
+  // (it stops at a blocked end or decides a free motion in a few queries), and a blocked
+  // translation goes on with it, for where it is blocked. A motion that turns by a hair (its
+  // ends' rotations differ by rounding) is swept with the margin raised by how far the turn
+  // strays (`as_translation`). An escape (relaxed) leaves out the same exempt pairs in the
+  // sweep as in its distances.
+  const Motion m = motion(a, b);
   const std::function<bool(std::uint32_t, std::uint32_t)> exempt = [this](std::uint32_t o, std::uint32_t t) {
     return exempt_.contains(o, t);
   };
-  if (a.rotation == b.rotation && max_queries > kSweepAfter) {
+  if (max_queries > kSweepAfter) {
+    const TranslationBound shift = as_translation(m);
     options.decide_after = kSweepAfter;
-    options.decide = [&] {
+    options.decide = [&, shift](double smallest) {
+      if (!(shift.slack < 0.5 * (smallest - margin_))) return false;  // turns too far to be swept
       ++sweeps_;
       return sweep_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, a,
-                               {.translation = b.translation - a.translation, .margin = margin_,
+                               {.translation = shift.translation, .margin = margin_ + shift.slack,
                                 .exclude_if = relaxed ? &exempt : nullptr})
           .clear;
     };
   }
-  const Certificate c = certify_motion(motion(a, b), bound, options);
+  const Certificate c = certify_motion(m, bound, options);
   if (c.status == MotionStatus::refused_cap && max_queries == kMaxCertificateQueries) ++cap_refusals_;
   return c;
 }

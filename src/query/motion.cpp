@@ -29,6 +29,15 @@ double motion_length(const Pose& from, const Pose& to, const Vec3& reference, do
   return travel + radius * angle;
 }
 
+TranslationBound as_translation(const Motion& motion) {
+  if (motion.from.rotation == motion.to.rotation) return {motion.to.translation - motion.from.translation, 0.0};
+  const Quat q(motion.from.rotation.transpose() * motion.to.rotation);
+  const double angle = 2.0 * std::atan2(q.vec().norm(), std::abs(q.w()));
+  // The relative allowances cover rounding in the angle and in the interpolated rotations.
+  return {motion.to.apply(motion.reference) - motion.from.apply(motion.reference),
+          motion.radius * (angle * (1.0 + 1e-9) + 1e-15)};
+}
+
 Pose Motion::at(double t) const {
   return t <= 0.0 ? from : (t >= 1.0 ? to : interpolate(from, to, t, reference));
 }
@@ -82,7 +91,7 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
     const bool capped = ++bisections > options.max_queries || p.t1 - p.t0 < 1e-9;
     if ((capped || bisections > options.decide_after) && options.decide && !out.decided) {
       out.decided = true;
-      if (options.decide()) {
+      if (options.decide(out.min_distance)) {
         out.status = MotionStatus::clear;
         return out;
       }
@@ -122,13 +131,15 @@ MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, co
     return d.distance;
   };
   CertificateOptions options{.margin = request.margin, .max_queries = request.max_queries};
-  if (request.sweep_after >= 0 && motion.from.rotation == motion.to.rotation) {
+  const TranslationBound shift = request.sweep_after >= 0 ? as_translation(motion) : TranslationBound{};
+  if (request.sweep_after >= 0) {
     options.decide_after = request.sweep_after;
-    options.decide = [&] {
+    options.decide = [&](double smallest) {
+      // A turn that strays by half the gap seen so far would not be cleared: no sweep.
+      if (!(shift.slack < 0.5 * (smallest - request.margin))) return false;
       ++out.sweeps;
       const SweepResult s = sweep_translation(a, pose_a, b, motion.from,
-                                              {.translation = motion.to.translation - motion.from.translation,
-                                               .margin = request.margin});
+                                              {.translation = shift.translation, .margin = request.margin + shift.slack});
       out.stats.bv_tests += s.stats.bv_tests;
       out.stats.triangle_tests += s.stats.triangle_tests;
       return s.clear;

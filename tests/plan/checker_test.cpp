@@ -67,6 +67,20 @@ TEST(Checker, AGrazingTranslationOverABumpIsBlockedWhereTheBumpIs) {
   EXPECT_LE(c.distance_at_block, kMargin);
 }
 
+TEST(Checker, AGrazingMotionWhoseRotationDiffersByRoundingIsSwept) {
+  // The grazing slide, its goal's rotation off the start's by rounding (1e-15 rad, as a chain of
+  // interpolated poses leaves it): swept with the margin raised by radius × angle (~2e-15).
+  GeneratedProblem g = body_over_a_floor(false);
+  g.problem.goal->rotation = Eigen::AngleAxisd(1e-15, Vec3::UnitX()).toRotationMatrix();
+  ASSERT_NE(g.problem.goal->rotation, g.problem.start.rotation);
+  const PlanScene scene = scene_of(g);
+  const detail::Checker check(scene, kMargin);
+  const Certificate c = check.certify(g.problem.start, -1, *g.problem.goal, -1);
+  EXPECT_TRUE(c.clear());
+  EXPECT_EQ(check.sweeps(), 1u);
+  EXPECT_LE(check.distance_queries(), static_cast<std::uint64_t>(detail::Checker::kSweepAfter) + 2);
+}
+
 TEST(Checker, AMotionThatTurnsKeepsTheCertificate) {
   // The same grazing motion with a turn of 1e-3 rad about z on the way is not a translation:
   // no sweep, the certificate bisects (more queries than the sweep's threshold) and clears it

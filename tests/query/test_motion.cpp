@@ -209,6 +209,60 @@ TEST(MotionClearance, AGrazingTranslationIsSwept) {
   EXPECT_EQ(motion_clearance(a, Pose::identity(), b, turning, {.margin = 0.1 - 1e-12, .max_queries = 200}).sweeps, 0);
 }
 
+TEST(MotionClearance, AsTranslationBoundsHowFarATurnStrays) {
+  // Every vertex of the body, at 201 poses along turning motions, lies within `slack` of where
+  // the pure translation of the reference point (rotation kept) puts it.
+  const Bvh b = build(test::box_triangles({-0.5, -0.2, -0.1}, {0.7, 0.3, 0.4}));
+  const Vec3 reference(0.1, 0.05, 0.1);
+  const double radius = motion_radius(b, reference);
+  Rng rng(7);
+  for (double angle : {1e-15, 1e-9, 1e-3, 0.5}) {
+    const Vec3 axis = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).normalized();
+    const Pose from = Pose::from_axis_angle(Vec3(0, 0, 1), 0.3, Vec3(1, 2, 3));
+    const Pose to{Eigen::AngleAxisd(angle, axis).toRotationMatrix() * from.rotation, Vec3(2, -1, 3.5)};
+    const Motion m{from, to, reference, radius};
+    const TranslationBound t = as_translation(m);
+    EXPECT_NEAR(t.slack, radius * angle, 1e-9 * radius * angle + 1e-14) << angle;
+    EXPECT_LT((t.translation - (to.apply(reference) - from.apply(reference))).norm(), 1e-15);
+    double worst = 0.0;
+    for (int k = 0; k <= 200; ++k) {
+      const Pose at = m.at(k / 200.0);
+      for (const Vec3& v : b.triangles.vertices)
+        worst = std::max(worst, (at.apply(v) - (from.apply(v) + k / 200.0 * t.translation)).norm());
+    }
+    // Up to the rounding of the poses themselves (coordinates ~4: a few 1e-16 each).
+    EXPECT_LE(worst, t.slack + 1e-14) << angle;
+    if (angle >= 1e-3) {
+      EXPECT_GT(worst, 0.5 * t.slack) << angle;  // and not far above it
+    }
+  }
+  // Equal rotations: exactly the pure translation.
+  const Motion straight{Pose::from_translation({0, 0, 0}), Pose::from_translation({1, 2, 3}), reference, radius};
+  EXPECT_EQ(as_translation(straight).slack, 0.0);
+  EXPECT_EQ(as_translation(straight).translation, Vec3(1, 2, 3));
+}
+
+TEST(MotionClearance, AGrazingMotionThatTurnsByAHairIsSweptToo) {
+  // The pass 1e-4 above the margin, ending turned by 1e-12 rad (the rounding a chain of poses
+  // leaves in a rotation): no body point strays 1e-12 from the translation, far inside the gap.
+  const Bvh a = build(test::box_triangles({-1, -1, -1}, {1, 1, 1}));
+  const Bvh b = build(test::box_triangles({-0.2, -0.2, -0.2}, {0.2, 0.2, 0.2}));
+  Motion turning{Pose::from_translation({-3, 1.3, 0}), Pose::from_translation({3, 1.3, 0}), Vec3::Zero(),
+                 motion_radius(b, Vec3::Zero())};
+  turning.to.rotation = Eigen::AngleAxisd(1e-12, Vec3::UnitY()).toRotationMatrix();
+  ASSERT_NE(turning.to.rotation, turning.from.rotation);
+  const double margin = 0.1 - 1e-4;
+  const MotionResult m = motion_clearance(a, Pose::identity(), b, turning, {.margin = margin});
+  EXPECT_TRUE(m.clear());
+  EXPECT_EQ(m.sweeps, 1);
+  EXPECT_EQ(m.distance_queries, 66);
+  EXPECT_GE(dense_minimum(a, b, turning.from, turning.to, Vec3::Zero(), 2000), margin);
+  // The certificate alone agrees, at a price.
+  const MotionResult plain = motion_clearance(a, Pose::identity(), b, turning, {.margin = margin, .sweep_after = -1});
+  EXPECT_TRUE(plain.clear());
+  EXPECT_GT(plain.distance_queries, 1000);
+}
+
 TEST(MotionClearance, AGrazingTranslationOverABumpIsBlockedOnceWhereTheBumpIs) {
   // The same pass 1e-4 above the margin (0.0999), over a bump on the face, x ∈ [0.3, 0.4],
   // 0.02 high: B (half width 0.2) is within the margin of it for centres

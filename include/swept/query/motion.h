@@ -65,9 +65,10 @@ struct CertificateOptions {
   double to_bound = -1.0;
   /// An exact second opinion for motions that graze the margin (`sweep_translation` for a pure
   /// translation): asked once, when the bisection passes `decide_after` queries or is about to
-  /// give up, whichever comes first. true ends the certificate clear; false lets the bisection
-  /// go on from where it is, to find where the motion is blocked. Empty: never asked.
-  std::function<bool()> decide;
+  /// give up, whichever comes first, with the smallest distance bound seen so far (> margin).
+  /// true ends the certificate clear; false lets the bisection go on from where it is, to find
+  /// where the motion is blocked. Empty: never asked.
+  std::function<bool(double smallest)> decide;
   int decide_after = 64;
 };
 
@@ -81,6 +82,17 @@ struct Certificate {
 
   bool clear() const { return status == MotionStatus::clear; }
 };
+
+/// A straight motion seen as a pure translation: B kept at `from`'s rotation and moved by its
+/// reference point's displacement. `slack` bounds how far any body point of the real motion
+/// strays from there: radius × turn angle (‖R − I‖ ≤ angle), 0 when the rotations are equal (the
+/// translation is then `to.translation − from.translation`, exactly). When the translation keeps
+/// more than margin + slack (`sweep_translation`), the motion keeps more than the margin.
+struct TranslationBound {
+  Vec3 translation = Vec3::Zero();
+  double slack = 0.0;
+};
+TranslationBound as_translation(const Motion& motion);
 
 /// Schwarzer–Saha–Latombe certificate of `motion` with the distance function `distance_at`.
 /// With D a lower bound on the distance, the piece [t0, t1] is free when
@@ -96,8 +108,10 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
 struct MotionRequest {
   double margin = 0.0;  ///< required distance along the whole motion
   int max_queries = kMaxCertificateQueries;  ///< cap on the bisection queries (then refused)
-  /// A pure translation whose certificate passes this many bisection queries (it grazes the
-  /// margin) is decided by `sweep_translation` in one traversal; negative: never.
+  /// A translation whose certificate passes this many bisection queries (it grazes the margin)
+  /// is decided by `sweep_translation` in one traversal — a pure one, or one that turns by less
+  /// than half its gap allows (`as_translation`: its ends' rotations differ by rounding); when
+  /// the sweep is not clear the bisection goes on. Negative: never.
   int sweep_after = 64;
 };
 struct MotionResult {
@@ -113,8 +127,8 @@ struct MotionResult {
   bool clear() const { return status == MotionStatus::clear; }
 };
 /// Is the motion of B (`motion`, see `interpolate`) against A at `pose_a` clear of A by more
-/// than the margin everywhere? `certify_motion` with the tree distance; a grazing pure
-/// translation is decided by `sweep_translation` (MotionRequest::sweep_after). Contact (distance 0)
+/// than the margin everywhere? `certify_motion` with the tree distance; a grazing translation
+/// is decided by `sweep_translation` (MotionRequest::sweep_after). Contact (distance 0)
 /// always blocks, so margin 0 asks for a collision-free motion. Distances are between the
 /// triangle surfaces (a body wholly inside a closed mesh is not in contact).
 MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
