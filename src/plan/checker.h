@@ -59,11 +59,13 @@ class Checker {
   double length(const Pose& a, const Pose& b) const { return motion_length(a, b, reference_, radius_); }
 
   /// Certificate of the straight motion a → b (distance > margin everywhere). `da`, `db` are
-  /// known lower bounds at the ends (negative: unknown). A pure translation whose certificate
-  /// runs past kSweepAfter queries (it grazes the margin: its pieces get short) is decided by
-  /// the exact sweep of the translation instead (`sweep_translation`), in one traversal; for
-  /// a blocked one the certificate goes on from where it was, to find where it is blocked. Refusals for the query cap are counted
-  /// (`cap_refusals`) when the cap is the default one; a lower `max_queries` is a caller's
+  /// known lower bounds at the ends (negative: unknown). A translation whose certificate runs
+  /// past kSweepAfter queries (it grazes the margin: its pieces get short) is decided by the
+  /// exact sweep of the translation instead (`sweep_translation`), in one traversal — a motion
+  /// that turns by a hair too, with the margin raised by how far the turn strays
+  /// (`as_translation`); for a blocked one the certificate goes on from where it was, to find
+  /// where it is blocked. Refusals for the query cap are counted (`cap_refusals`) when the cap
+  /// is the default one; a lower `max_queries` is a caller's
   /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
                       int max_queries = kMaxCertificateQueries) const;
