@@ -42,6 +42,15 @@ TEST(Checker, AGrazingTranslationIsSweptNotBisected) {
   EXPECT_EQ(check.sweeps(), 1u);
   EXPECT_LE(check.distance_queries(), static_cast<std::uint64_t>(detail::Checker::kSweepAfter) + 2);
   EXPECT_EQ(check.cap_refusals(), 0u);
+  // The goal's rotation off the start's by rounding (1e-15 rad, as a chain of interpolated poses
+  // leaves it): swept too, with the margin raised by radius × angle (~2e-15).
+  Pose turned = *g.problem.goal;
+  turned.rotation = Eigen::AngleAxisd(1e-15, Vec3::UnitX()).toRotationMatrix();
+  ASSERT_NE(turned.rotation, g.problem.start.rotation);
+  const detail::Checker check_turned(scene, kMargin);
+  EXPECT_TRUE(check_turned.certify(g.problem.start, -1, turned, -1).clear());
+  EXPECT_EQ(check_turned.sweeps(), 1u);
+  EXPECT_LE(check_turned.distance_queries(), static_cast<std::uint64_t>(detail::Checker::kSweepAfter) + 2);
   // By hand: the distance is margin + gap all along.
   for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
     const Pose q = interpolate(g.problem.start, *g.problem.goal, t, scene.reference);
@@ -65,20 +74,6 @@ TEST(Checker, AGrazingTranslationOverABumpIsBlockedWhereTheBumpIs) {
   EXPECT_GE(c.t_blocked, (4.9 - 1.5 - side + 10) / 20 - 1e-9);
   EXPECT_LE(c.t_blocked, (5.1 + 1.5 + side + 10) / 20 + 1e-9);
   EXPECT_LE(c.distance_at_block, kMargin);
-}
-
-TEST(Checker, AGrazingMotionWhoseRotationDiffersByRoundingIsSwept) {
-  // The grazing slide, its goal's rotation off the start's by rounding (1e-15 rad, as a chain of
-  // interpolated poses leaves it): swept with the margin raised by radius × angle (~2e-15).
-  GeneratedProblem g = body_over_a_floor(false);
-  g.problem.goal->rotation = Eigen::AngleAxisd(1e-15, Vec3::UnitX()).toRotationMatrix();
-  ASSERT_NE(g.problem.goal->rotation, g.problem.start.rotation);
-  const PlanScene scene = scene_of(g);
-  const detail::Checker check(scene, kMargin);
-  const Certificate c = check.certify(g.problem.start, -1, *g.problem.goal, -1);
-  EXPECT_TRUE(c.clear());
-  EXPECT_EQ(check.sweeps(), 1u);
-  EXPECT_LE(check.distance_queries(), static_cast<std::uint64_t>(detail::Checker::kSweepAfter) + 2);
 }
 
 TEST(Checker, AMotionThatTurnsKeepsTheCertificate) {
