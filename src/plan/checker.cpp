@@ -56,19 +56,17 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
   // strays (`as_translation`). An escape (relaxed) leaves out the same exempt pairs in the
   // sweep as in its distances.
   const Motion m = motion(a, b);
-  const std::function<bool(std::uint32_t, std::uint32_t)> exempt = [this](std::uint32_t o, std::uint32_t t) {
-    return exempt_.contains(o, t);
-  };
   if (max_queries > kSweepAfter) {
-    const TranslationBound shift = as_translation(m);
     options.decide_after = kSweepAfter;
-    options.decide = [&, shift](double smallest) {
-      if (!(shift.slack < 0.5 * (smallest - margin_))) return false;  // turns too far to be swept
+    options.decide = [&](double smallest) {
+      const std::function<bool(std::uint32_t, std::uint32_t)> exempt = [this](std::uint32_t o, std::uint32_t t) {
+        return exempt_.contains(o, t);
+      };
+      const std::optional<SweepResult> s =
+          sweep_as_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, m, margin_, smallest, relaxed ? &exempt : nullptr);
+      if (!s) return false;  // turns too far to be swept
       ++sweeps_;
-      return sweep_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, a,
-                               {.translation = shift.translation, .margin = margin_ + shift.slack,
-                                .exclude_if = relaxed ? &exempt : nullptr})
-          .clear;
+      return s->clear;
     };
   }
   const Certificate c = certify_motion(m, bound, options);

@@ -38,6 +38,15 @@ TranslationBound as_translation(const Motion& motion) {
           motion.radius * (angle * (1.0 + 1e-9) + 1e-15)};
 }
 
+std::optional<SweepResult> sweep_as_translation(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,
+                                                double margin, double smallest,
+                                                const std::function<bool(std::uint32_t, std::uint32_t)>* exclude_if) {
+  const TranslationBound shift = as_translation(motion);
+  if (!(shift.slack < 0.5 * (smallest - margin))) return std::nullopt;
+  return sweep_translation(a, pose_a, b, motion.from,
+                           {.translation = shift.translation, .margin = margin + shift.slack, .exclude_if = exclude_if});
+}
+
 Pose Motion::at(double t) const {
   return t <= 0.0 ? from : (t >= 1.0 ? to : interpolate(from, to, t, reference));
 }
@@ -131,18 +140,15 @@ MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, co
     return d.distance;
   };
   CertificateOptions options{.margin = request.margin, .max_queries = request.max_queries};
-  const TranslationBound shift = request.sweep_after >= 0 ? as_translation(motion) : TranslationBound{};
   if (request.sweep_after >= 0) {
     options.decide_after = request.sweep_after;
     options.decide = [&](double smallest) {
-      // A turn that strays by half the gap seen so far would not be cleared: no sweep.
-      if (!(shift.slack < 0.5 * (smallest - request.margin))) return false;
+      const std::optional<SweepResult> s = sweep_as_translation(a, pose_a, b, motion, request.margin, smallest);
+      if (!s) return false;
       ++out.sweeps;
-      const SweepResult s = sweep_translation(a, pose_a, b, motion.from,
-                                              {.translation = shift.translation, .margin = request.margin + shift.slack});
-      out.stats.bv_tests += s.stats.bv_tests;
-      out.stats.triangle_tests += s.stats.triangle_tests;
-      return s.clear;
+      out.stats.bv_tests += s->stats.bv_tests;
+      out.stats.triangle_tests += s->stats.triangle_tests;
+      return s->clear;
     };
   }
   const Certificate c = certify_motion(motion, tree_distance, options);

@@ -161,4 +161,12 @@ struct SweepResult {
 SweepResult sweep_translation(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
                               const SweepRequest& request);
 
+/// The exact second opinion on a grazing motion (CertificateOptions::decide): the sweep of
+/// `as_translation(motion)` with the margin raised by its slack, pairs left out by `exclude_if`
+/// as in SweepRequest; nullopt, and no sweep, when the slack is not under half the gap
+/// `smallest` − margin (a turn that large would not be cleared).
+std::optional<SweepResult> sweep_as_translation(
+    const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion, double margin, double smallest,
+    const std::function<bool(std::uint32_t triangle_a, std::uint32_t triangle_b)>* exclude_if = nullptr);
+
 }  // namespace swept
