@@ -90,7 +90,7 @@ class Checker {
   /// Exact sweeps of pure translations run by certify().
   std::uint64_t sweeps() const { return sweeps_.load(); }
   /// Queries of a pure translation's certificate before the exact sweep decides it.
-  static constexpr int kSweepAfter = 64;
+  static constexpr int kSweepAfter = kSweepAfterQueries;
   /// Motions refused because certifying them needed more than kMaxCertificateQueries queries
   /// (or pieces below the parameter resolution): they graze the margin.
   std::uint64_t cap_refusals() const { return cap_refusals_.load(); }

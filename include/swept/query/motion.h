@@ -50,6 +50,10 @@ enum class MotionStatus {
 
 /// The default cap on the bisection queries of one certificate.
 inline constexpr int kMaxCertificateQueries = 200000;
+/// The default number of bisection queries after which a certificate asks its exact second
+/// opinion (CertificateOptions::decide_after, MotionRequest::sweep_after, the planner's
+/// certificates): past it, the motion grazes the margin and a sweep is the cheaper answer.
+inline constexpr int kSweepAfterQueries = 64;
 
 /// A lower bound on the distance at `pose`, exact when below `enough` (any value ≥ `enough`
 /// otherwise, like `DistanceRequest::enough`).
@@ -69,7 +73,7 @@ struct CertificateOptions {
   /// true ends the certificate clear; false lets the bisection go on from where it is, to find
   /// where the motion is blocked. Empty: never asked.
   std::function<bool(double smallest)> decide;
-  int decide_after = 64;
+  int decide_after = kSweepAfterQueries;
 };
 
 struct Certificate {
@@ -112,7 +116,7 @@ struct MotionRequest {
   /// is decided by `sweep_translation` in one traversal — a pure one, or one that turns by less
   /// than half its gap allows (`as_translation`: its ends' rotations differ by rounding); when
   /// the sweep is not clear the bisection goes on. Negative: never.
-  int sweep_after = 64;
+  int sweep_after = kSweepAfterQueries;
 };
 struct MotionResult {
   MotionStatus status = MotionStatus::refused_cap;
