@@ -1,47 +1,41 @@
 // swept: can this part be taken out, and how?
+#include "cli_main.h"
 #include "commands.h"
+#include "tools_path.h"
 #include "swept/io/cad_reader.h"
 
-#include <exception>
-#include <iostream>
 #include <string>
+#include <string_view>
 
 int main(int argc, char** argv) {
+  // `swept scene` and `swept bench` are swept-tools' (tools_main.cpp): this program does not
+  // link OpenCASCADE's modelling libraries or FCL, and starts in a fraction of the time.
+  if (argc > 1 && (std::string_view(argv[1]) == "scene" || std::string_view(argv[1]) == "bench"))
+    return swept::cli::exec_tools(argv);
   CLI::App app{
       "swept: collision and distance queries on rigid triangle meshes with RSS trees,\n"
       "and certified, deterministic 6-DOF assembly/disassembly path planning."};
   app.require_subcommand(1);
-  // The version, and which CAD reader module (STEP, IGES, OCCT .brep) this swept loads: an
-  // install or a moved prefix can be checked with it (swept/io/cad_reader.h).
+  // The version, which CAD reader module (STEP, IGES, OCCT .brep) this swept loads and which
+  // swept-tools it runs: an install or a moved prefix can be checked with it (swept/io/cad_reader.h,
+  // tools_path.h).
   app.set_version_flag("--version", [] {
     const swept::CadReaderStatus cad = swept::cad_reader_status();
     std::string text = "swept 0.1.0\nCAD reader (STEP, IGES, OCCT .brep): ";
-    if (!cad.path.empty()) return text + cad.path.string();
-    return text + "none: " + cad.error;
+    text += cad.path.empty() ? "none: " + cad.error : cad.path.string();
+    const swept::cli::ToolsLookup tools = swept::cli::find_tools();
+    text += "\nscenes and benchmarks (swept scene, swept bench): ";
+    return text + (tools.path.empty() ? "none: tried " + tools.tried : tools.path.string());
   });
   swept::cli::add_bvh_command(app);
   swept::cli::add_plan_command(app);
   swept::cli::add_check_command(app);
   swept::cli::add_view_command(app);
-  swept::cli::add_scene_command(app);
+  // Listed here for --help; run by swept-tools (above).
+  app.add_subcommand("scene", "Generate a built-in CAD-like scene, a planner benchmark problem or an assembly "
+                              "(`swept scene --help`)");
   swept::cli::add_mesh_stats_command(app);
-  swept::cli::add_bench_queries_command(app);
-  swept::cli::add_bench_paper_command(app);
+  app.add_subcommand("bench", "Benchmarks against peer libraries: queries, paper (`swept bench --help`)");
   swept::cli::add_disassemble_command(app);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // --help and --version end here with code 0. Any other command-line error (a missing file,
-    // an unknown option, a value out of range) is bad input: one line and exit code 1, not
-    // CLI11's own codes (105, 106, ...).
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-    std::cerr << "swept: error: " << e.what() << " (see --help)\n";
-    return 1;
-  } catch (const swept::cli::ExitCode& e) {
-    return e.code;
-  } catch (const std::exception& e) {
-    std::cerr << "swept: error: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return swept::cli::run_cli(app, argc, argv);
 }

@@ -19,11 +19,17 @@ test -x "$tmp/prefix/bin/swept"
 # ... also when it is run by name from PATH (then argv[0] is no location), from another folder.
 (cd "$tmp" && PATH="$tmp/prefix/bin:$PATH" swept --version) |
   grep -qxF "CAD reader (STEP, IGES, OCCT .brep): $tmp/prefix/lib/swept/libswept_cad.so"
-# Programs that never read CAD do not load OpenCASCADE at start-up.
-if ldd "$tmp/prefix/bin/swept" | grep -q "libTKXDESTEP"; then
-  echo "install: the swept binary links OpenCASCADE's STEP reader at start-up" >&2
+# Programs that never read CAD do not load OpenCASCADE at start-up; `swept` itself links neither
+# OpenCASCADE's modelling libraries nor FCL: `swept scene` and `swept bench` run the installed
+# swept-tools (libexec), found from the moved prefix too.
+if ldd "$tmp/prefix/bin/swept" | grep -qE "libTK|libfcl"; then
+  echo "install: the swept binary links OpenCASCADE or FCL at start-up" >&2
   exit 1
 fi
+"$tmp/prefix/bin/swept" --version |
+  grep -qxF "scenes and benchmarks (swept scene, swept bench): $tmp/prefix/libexec/swept/swept-tools"
+(cd "$tmp" && PATH="$tmp/prefix/bin:$PATH" swept scene --list) | grep -q "^tunnel-console"
+(cd "$tmp" && PATH="$tmp/prefix/bin:$PATH" swept bench --help) | grep -q "queries"
 # The Python module, when it was built, imports from the prefix's site directory.
 for site in "$tmp"/prefix/lib/python3*/dist-packages; do
   [ -d "$site/swept" ] || continue
@@ -31,4 +37,4 @@ for site in "$tmp"/prefix/lib/python3*/dist-packages; do
   (cd "$tmp" && PYTHONPATH="$site" "${python:-/usr/bin/python3}" -c "import swept, swept.study; assert swept.__file__.startswith('$site')")
   echo "install: the Python module imports from $site"
 done
-echo "install: find_package(swept), pkg-config and the swept binary work"
+echo "install: find_package(swept), pkg-config, the swept binary and swept-tools work"

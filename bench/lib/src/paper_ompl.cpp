@@ -22,7 +22,7 @@ fs::path default_bench_plan() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return {};
-  // <build>/apps/swept/swept → <build>/bench/bench_plan
+  // <build>/apps/swept/swept-tools (what `swept bench paper` runs) → <build>/bench/bench_plan
   return exe.parent_path().parent_path().parent_path() / "bench" / "bench_plan";
 }
 
