@@ -2,7 +2,7 @@
 // peer libraries (FCL): `scene` (the built-in CAD-like scenes, modelled with OpenCASCADE) and
 // `bench` (side by side with FCL). `swept scene ...` and `swept bench ...` run this program
 // with the same arguments (tools_path.h), so that every other command starts without loading
-// those libraries: their relocations took ~35 of the ~45 ms any `swept` command spent starting.
+// those libraries: their relocations took ~25 of the ~30 ms any `swept` command spent starting.
 #include "cli_main.h"
 #include "commands.h"
 

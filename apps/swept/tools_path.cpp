@@ -1,5 +1,7 @@
 #include "tools_path.h"
 
+#include "swept/io/install_paths.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,20 +27,7 @@
 #endif
 
 namespace swept::cli {
-namespace {
-
 namespace fs = std::filesystem;
-
-bool inside(const fs::path& dir, const std::string& root) {
-  if (root.empty() || dir.empty()) return false;
-  std::error_code ec;
-  const fs::path r = fs::weakly_canonical(fs::path(root), ec);
-  if (ec) return false;
-  const std::string d = dir.string(), rs = r.string();
-  return d.size() >= rs.size() && d.compare(0, rs.size(), rs) == 0 && (d.size() == rs.size() || d[rs.size()] == '/');
-}
-
-}  // namespace
 
 std::vector<fs::path> tools_candidates() {
   std::vector<fs::path> out;
@@ -50,7 +39,7 @@ std::vector<fs::path> tools_candidates() {
   const fs::path exe = fs::canonical("/proc/self/exe", ec);
   const fs::path dir = ec ? fs::path() : exe.parent_path();
   const std::string build_path = SWEPT_TOOLS_BUILD_PATH, install_path = SWEPT_TOOLS_INSTALL_PATH;
-  const bool in_build_tree = inside(dir, SWEPT_BUILD_DIR);
+  const bool in_build_tree = path_inside(dir, SWEPT_BUILD_DIR);
   if (in_build_tree && !build_path.empty()) out.emplace_back(build_path);
   if (!dir.empty()) {
     out.push_back(dir / "swept-tools");

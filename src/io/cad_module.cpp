@@ -5,6 +5,7 @@
 #include "cad_module.h"
 
 #include "swept/io/cad_reader.h"
+#include "swept/io/install_paths.h"
 
 #include <dlfcn.h>
 
@@ -56,14 +57,6 @@ std::vector<fs::path> own_directories() {
   return out;
 }
 
-bool inside(const fs::path& dir, const std::string& root) {
-  if (root.empty() || dir.empty()) return false;
-  std::error_code ec;
-  const fs::path r = fs::weakly_canonical(fs::path(root), ec);
-  if (ec) return false;
-  const std::string d = dir.string(), rs = r.string();
-  return d.size() >= rs.size() && d.compare(0, rs.size(), rs) == 0 && (d.size() == rs.size() || d[rs.size()] == '/');
-}
 
 CadModule load() {
   CadModule m;
@@ -109,7 +102,7 @@ std::vector<fs::path> cad_module_candidates() {
   const std::vector<fs::path> dirs = own_directories();
   const std::string build_path = SWEPT_CAD_MODULE_BUILD_PATH, install_path = SWEPT_CAD_MODULE_INSTALL_PATH;
   const bool in_build_tree =
-      std::any_of(dirs.begin(), dirs.end(), [](const fs::path& d) { return inside(d, SWEPT_BUILD_DIR); });
+      std::any_of(dirs.begin(), dirs.end(), [](const fs::path& d) { return path_inside(d, SWEPT_BUILD_DIR); });
   // A binary in its build tree loads that tree's module first, whatever is installed.
   if (in_build_tree && !build_path.empty()) out.emplace_back(build_path);
   for (const fs::path& dir : dirs) {

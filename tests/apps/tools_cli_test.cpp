@@ -5,8 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,17 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Runs `command` in a shell; stdout and stderr together.
-test::CliRun shell(const std::string& command) {
-  test::CliRun r;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+test::CliRun shell(const std::string& command) { return test::run_shell(command + " 2>&1"); }
 
 TEST(ToolsCli, SceneAndBenchRunThroughSweptWithTheirExitCodes) {
   const test::CliRun list = test::run_cli("scene --list");

@@ -13,9 +13,8 @@ struct CliRun {
   std::string out;  ///< stdout, and stderr too when `with_stderr`
 };
 
-/// Runs `swept ARGS` and captures its output.
-inline CliRun run_cli(const std::string& args, bool with_stderr = true) {
-  const std::string cmd = std::string(SWEPT_CLI) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+/// Runs a shell command line and captures its stdout.
+inline CliRun run_shell(const std::string& cmd) {
   CliRun r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -25,6 +24,11 @@ inline CliRun run_cli(const std::string& args, bool with_stderr = true) {
   const int status = ::pclose(pipe);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+/// Runs `swept ARGS` and captures its output.
+inline CliRun run_cli(const std::string& args, bool with_stderr = true) {
+  return run_shell(std::string(SWEPT_CLI) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null"));
 }
 
 /// Lines in a command's output (its newlines).
