@@ -64,50 +64,26 @@ namespace {
 /// The projection-gap bound; with `projected`, the alternating-projection direction is tried
 /// after the face axes.
 double gap_bound(const RectanglePair& pr, double stop_at, bool projected) {
-  const Mat3& R = pr.rotation;
   const Vec3& t = pr.translation;
-  const double a0 = pr.a[0], a1 = pr.a[1], b0 = pr.b[0], b1 = pr.b[1];
   // Rounding allowance, so that the bound never exceeds the exact distance.
-  const double slack =
-      kRectSlack * (std::abs(t.x()) + std::abs(t.y()) + std::abs(t.z()) + a0 + a1 + b0 + b1);
+  const double slack = detail::rectangle_slack(t, pr.a[0], pr.a[1], pr.b[0], pr.b[1]);
   stop_at += slack;
   double gap = -kInf;
   if (projected) {
-    // Two rounds (one when far apart) of alternating projection from B's center: P on A, Q on
-    // B. The direction Q − P converges to the closest-pair direction, and the gap along it is a
-    // valid bound anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`,
-    // no axis can reach `stop_at` and the remaining axes are skipped.
-    const Vec3 u = R.col(0), v = R.col(1);
-    auto onto_a = [&](const Vec3& x) {
-      return Vec3(std::clamp(x.x(), -a0, a0), std::clamp(x.y(), -a1, a1), 0.0);
-    };
-    auto onto_b = [&](const Vec3& x) {
-      const Vec3 d = x - t;
-      return Vec3(t + std::clamp(d.dot(u), -b0, b0) * u + std::clamp(d.dot(v), -b1, b1) * v);
-    };
-    Vec3 p = onto_a(t);
-    Vec3 q = onto_b(p);
-    // Centers more than twice the rectangles' half-lengths apart: the first round's direction
-    // is already close to the closest-pair direction, and the second round costs more than the
-    // bound gains (far-apart CAD pairs: 5-10 % less distance time with one round there; near
-    // contact the second round pays).
-    const double span = a0 + a1 + b0 + b1;
-    if (!(t.squaredNorm() > 4.0 * span * span)) {
-      p = onto_a(q);
-      q = onto_b(p);
-    }
-    const Vec3 n = q - p;
-    const double nn = n.squaredNorm();
-    if (nn > 0.0) {
-      const double len = std::sqrt(nn);
-      const double ext = a0 * std::abs(n.x()) + a1 * std::abs(n.y()) + b0 * std::abs(n.dot(u)) +
-                         b1 * std::abs(n.dot(v));
-      gap = (std::abs(t.dot(n)) - ext) / len;
-      if (gap >= stop_at || len + slack < stop_at) return gap - slack;
-    } else if (stop_at > slack) {
-      return -slack;  // the rectangles touch: no positive bound exists
-    }
+    const detail::ProjectionGap first = detail::projection_gap(pr.rotation.col(0), pr.rotation.col(1), t, pr.a[0],
+                                                               pr.a[1], pr.b[0], pr.b[1], stop_at, slack);
+    if (first.decided) return first.gap > -kInf ? first.gap - slack : -slack;
+    gap = first.gap;
   }
+  return detail::rectangle_axes_gap(pr, stop_at, gap, slack);
+}
+
+}  // namespace
+
+double detail::rectangle_axes_gap(const RectanglePair& pr, double stop_at, double gap, double slack) {
+  const Mat3& R = pr.rotation;
+  const Vec3& t = pr.translation;
+  const double a0 = pr.a[0], a1 = pr.a[1], b0 = pr.b[0], b1 = pr.b[1];
   // Projection half-widths: A on n is a0|n.x| + a1|n.y|; B on n is b0|n·u| + b1|n·v|, with u, v
   // the first two columns of R. The face normals are unit vectors: no square roots.
   const double r00 = std::abs(R(0, 0)), r01 = std::abs(R(0, 1)), r10 = std::abs(R(1, 0)),
@@ -150,8 +126,6 @@ double gap_bound(const RectanglePair& pr, double stop_at, bool projected) {
   axis(R(2, 1), 0.0, -R(0, 1), R(2, 1) * R(0, 0) - R(0, 1) * R(2, 0), 0.0);
   return gap - slack;
 }
-
-}  // namespace
 
 double rectangle_gap(const RectanglePair& pr, double stop_at) { return gap_bound(pr, stop_at, false); }
 

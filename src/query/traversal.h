@@ -29,20 +29,42 @@ struct Relative {
   }
 };
 
+/// m·x and mᵀ·x, written out: every column of a pair's frame is formed by the same arithmetic,
+/// whichever of them a test asks for first.
+[[gnu::always_inline]] inline Vec3 times(const Mat3& m, const Vec3& x) {
+  return {m(0, 0) * x.x() + m(0, 1) * x.y() + m(0, 2) * x.z(), m(1, 0) * x.x() + m(1, 1) * x.y() + m(1, 2) * x.z(),
+          m(2, 0) * x.x() + m(2, 1) * x.y() + m(2, 2) * x.z()};
+}
+[[gnu::always_inline]] inline Vec3 transpose_times(const Mat3& m, const Vec3& x) {
+  return {m(0, 0) * x.x() + m(1, 0) * x.y() + m(2, 0) * x.z(), m(0, 1) * x.x() + m(1, 1) * x.y() + m(2, 1) * x.z(),
+          m(0, 2) * x.x() + m(1, 2) * x.y() + m(2, 2) * x.z()};
+}
+
 /// A node of B decoded (Node stores it compactly) and placed in A's model frame: its center at
 /// once, its axes on first use (a bounding-sphere test often settles a pair from the centers
-/// alone).
+/// alone), and the normal only when a test needs it (the distance search's first projection
+/// step uses the first two axes alone, and almost always decides).
 struct PlacedRss {
   Rss rss;  ///< in B's model frame
   const Relative* rel = nullptr;
   Vec3 center;
   Mat3 axes_;
-  bool has_axes = false;
+  int placed_axes = 0;  ///< columns of axes_ computed: 0, 2 or 3
 
+  /// The first two axes (columns 0 and 1 of the result; column 2 may not be set).
+  const Mat3& first_axes() {
+    if (placed_axes < 2) {
+      axes_.col(0) = times(rel->rotation, rss.axes.col(0));
+      axes_.col(1) = times(rel->rotation, rss.axes.col(1));
+      placed_axes = 2;
+    }
+    return axes_;
+  }
   const Mat3& axes() {
-    if (!has_axes) {
-      axes_.noalias() = rel->rotation * rss.axes;
-      has_axes = true;
+    if (placed_axes < 3) {
+      first_axes();
+      axes_.col(2) = times(rel->rotation, rss.axes.col(2));
+      placed_axes = 3;
     }
     return axes_;
   }
@@ -65,8 +87,11 @@ inline PlacedRss place(const Bvh& b, std::int32_t i, const Relative& rel) {
 /// Rectangles of node `na` of A and node `nb` of B (placed in A's frame), in na's frame.
 [[gnu::always_inline]] inline RectanglePair node_pair(const Rss& na, const Rss& nb, PlacedRss& placed) {
   RectanglePair p;
-  p.rotation.noalias() = na.axes.transpose() * placed.axes();
-  p.translation.noalias() = na.axes.transpose() * (placed.center - na.center);
+  const Mat3& axes = placed.axes();
+  p.rotation.col(0) = transpose_times(na.axes, axes.col(0));
+  p.rotation.col(1) = transpose_times(na.axes, axes.col(1));
+  p.rotation.col(2) = transpose_times(na.axes, axes.col(2));
+  p.translation = transpose_times(na.axes, placed.center - na.center);
   p.a[0] = na.half_length[0];
   p.a[1] = na.half_length[1];
   p.b[0] = nb.half_length[0];

@@ -280,5 +280,43 @@ TEST(RssDistance, IsALowerBoundAndRectangleDistanceIsExact) {
   EXPECT_GT(tight, separated / 2);
 }
 
+// The distance search runs rectangle_lower_bound in its two steps from B's first two axes and
+// center alone (src/query/query.cpp, DistanceSearch::bound): the same bound, to the bit, for
+// any stop level, whether the first step decides or not.
+TEST(RssDistance, TwoStepBoundIsTheLowerBoundToTheBit) {
+  Rng rng(22);
+  int decided = 0, second = 0;
+  for (int it = 0; it < 4000; ++it) {
+    Rss a, b;
+    a.axes = rng.rotation();
+    b.axes = (it % 5 == 0) ? a.axes : rng.rotation();
+    const double spread = (it % 3 == 0) ? 10.0 : 1.0;
+    a.center = rng.vec(-spread, spread);
+    b.center = rng.vec(-spread, spread);
+    a.half_length = {rng.uniform(0, 1), rng.uniform(0, 0.5)};
+    b.half_length = {rng.uniform(0, 1), (it % 7 == 0) ? 0.0 : rng.uniform(0, 0.5)};
+    const RectanglePair pair = rectangle_pair(a, b);
+    const double exact = rectangle_distance(pair);
+    for (const double stop : {std::numeric_limits<double>::infinity(), 0.0, 0.5 * exact, exact, 2.0 * exact + 0.1}) {
+      const double slack = detail::rectangle_slack(pair.translation, pair.a[0], pair.a[1], pair.b[0], pair.b[1]);
+      const detail::ProjectionGap first =
+          detail::projection_gap(pair.rotation.col(0), pair.rotation.col(1), pair.translation, pair.a[0], pair.a[1],
+                                 pair.b[0], pair.b[1], stop + slack, slack);
+      double two_step;
+      if (first.decided) {
+        ++decided;
+        two_step = first.gap > -std::numeric_limits<double>::infinity() ? first.gap - slack : -slack;
+      } else {
+        ++second;
+        two_step = detail::rectangle_axes_gap(pair, stop + slack, first.gap, slack);
+      }
+      EXPECT_EQ(two_step, rectangle_lower_bound(pair, stop)) << it << " stop " << stop;
+      EXPECT_LE(two_step, exact + 1e-14 * (2 * spread + 4)) << it;
+    }
+  }
+  EXPECT_GT(decided, 1000);
+  EXPECT_GT(second, 1000);
+}
+
 }  // namespace
 }  // namespace swept

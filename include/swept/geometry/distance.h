@@ -9,6 +9,8 @@
 #include "swept/geometry/rss.h"
 #include "swept/geometry/types.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace swept {
@@ -104,6 +106,63 @@ double rectangle_gap(const RectanglePair& pair,
 /// returns early once a gap ≥ `stop_at` is found.
 double rectangle_lower_bound(const RectanglePair& pair,
                              double stop_at = std::numeric_limits<double>::infinity());
+
+namespace detail {
+
+/// `rectangle_lower_bound` in two steps, so that a traversal can run the first without forming
+/// the whole pair: the first needs only B's first two axes in A's frame (`u`, `v`) and B's
+/// center (`t`), and decides almost every node pair. `stop_at` here already includes `slack`.
+struct ProjectionGap {
+  double gap;    ///< the gap along the projection direction (−∞ when there is none)
+  bool decided;  ///< the bound is `gap − slack`; otherwise go on with `rectangle_axes_gap`
+};
+
+/// The rounding allowance of both steps: so that a bound never exceeds the exact distance.
+inline double rectangle_slack(const Vec3& t, double a0, double a1, double b0, double b1) {
+  return 1e-12 * (std::abs(t.x()) + std::abs(t.y()) + std::abs(t.z()) + a0 + a1 + b0 + b1);
+}
+
+/// Two rounds (one when far apart) of alternating projection from B's center: P on A, Q on B.
+/// The direction Q − P converges to the closest-pair direction, and the gap along it is a valid
+/// bound anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`, no axis
+/// can reach `stop_at` and the remaining axes are skipped.
+[[gnu::always_inline]] inline ProjectionGap projection_gap(const Vec3& u, const Vec3& v, const Vec3& t, double a0,
+                                                           double a1, double b0, double b1, double stop_at,
+                                                           double slack) {
+  auto onto_a = [&](const Vec3& x) { return Vec3(std::clamp(x.x(), -a0, a0), std::clamp(x.y(), -a1, a1), 0.0); };
+  auto onto_b = [&](const Vec3& x) {
+    const Vec3 d = x - t;
+    return Vec3(t + std::clamp(d.dot(u), -b0, b0) * u + std::clamp(d.dot(v), -b1, b1) * v);
+  };
+  Vec3 p = onto_a(t);
+  Vec3 q = onto_b(p);
+  // Centers more than twice the rectangles' half-lengths apart: the first round's direction is
+  // already close to the closest-pair direction, and the second round costs more than the bound
+  // gains (far-apart CAD pairs: 5-10 % less distance time with one round there; near contact
+  // the second round pays).
+  const double span = a0 + a1 + b0 + b1;
+  if (!(t.squaredNorm() > 4.0 * span * span)) {
+    p = onto_a(q);
+    q = onto_b(p);
+  }
+  const Vec3 n = q - p;
+  const double nn = n.squaredNorm();
+  if (nn > 0.0) {
+    const double len = std::sqrt(nn);
+    const double ext =
+        a0 * std::abs(n.x()) + a1 * std::abs(n.y()) + b0 * std::abs(n.dot(u)) + b1 * std::abs(n.dot(v));
+    const double gap = (std::abs(t.dot(n)) - ext) / len;
+    return {gap, gap >= stop_at || len + slack < stop_at};
+  }
+  // The rectangles touch: no positive bound exists.
+  return {-std::numeric_limits<double>::infinity(), stop_at > slack};
+}
+
+/// The second step: the projection gaps on the rectangles' axes, the center line and the edge ×
+/// edge directions, starting from the first step's `gap`; returns the bound (slack taken off).
+double rectangle_axes_gap(const RectanglePair& pair, double stop_at, double gap, double slack);
+
+}  // namespace detail
 
 /// A lower bound on the distance between rectangle A and rectangle B *swept* along `sweep` (B at
 /// translation + τ·sweep for every τ ∈ [0, 1], all in A's frame): the largest projection gap on
