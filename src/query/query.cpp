@@ -41,6 +41,15 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
   auto overlapping = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
     const double limit = na.radius + pb.rss.radius + touch;
+    // rectangle_gap's first axis, A's normal, from B's first two axes and center alone: it
+    // separates many pairs before B's normal and the pair's full frame are formed.
+    const Mat3& placed = pb.first_axes();
+    const Vec3 t = detail::transpose_times(na.axes, pb.center - na.center);
+    const double b0 = pb.rss.half_length[0], b1 = pb.rss.half_length[1];
+    const double slack = detail::rectangle_slack(t, na.half_length[0], na.half_length[1], b0, b1);
+    const double gap = std::abs(t.z()) - b0 * std::abs(detail::transpose_times(na.axes, placed.col(0)).z()) -
+                       b1 * std::abs(detail::transpose_times(na.axes, placed.col(1)).z());
+    if (gap >= limit + slack) return !(gap - slack > limit);
     return !(rectangle_gap(node_pair(na, pb.rss, pb), limit) > limit);
   };
   auto leaves = [&](const Node& na, const Node& nb) {
