@@ -135,31 +135,10 @@ struct DistanceSearch {
   }
   /// Lower bound for a node of A (`na`) against a node of B placed in A's frame (`pb`); the
   /// bound computation stops as soon as it reaches the prune level.
-  /// (`rectangle_lower_bound` of the pair, in its two steps: the first, which decides almost
-  /// every pair, needs neither B's normal nor the pair's full frame.)
   double bound(const Rss& na, detail::PlacedRss& pb) {
     ++stats.bv_tests;
-    const Rss& nb = pb.rss;
-    const double radii = na.radius + nb.radius;
-    const double a0 = na.half_length[0], a1 = na.half_length[1], b0 = nb.half_length[0], b1 = nb.half_length[1];
-    const Mat3& placed = pb.first_axes();
-    const Vec3 u = detail::transpose_times(na.axes, placed.col(0));
-    const Vec3 v = detail::transpose_times(na.axes, placed.col(1));
-    const Vec3 t = detail::transpose_times(na.axes, pb.center - na.center);
-    const double slack = detail::rectangle_slack(t, a0, a1, b0, b1);
-    const double stop_at = (prune_level() + radii) + slack;
-    const detail::ProjectionGap first = detail::projection_gap(u, v, t, a0, a1, b0, b1, stop_at, slack);
-    if (first.decided) return (first.gap > -kInf ? first.gap - slack : -slack) - radii;
-    RectanglePair pair;
-    pair.rotation.col(0) = u;
-    pair.rotation.col(1) = v;
-    pair.rotation.col(2) = detail::transpose_times(na.axes, pb.axes().col(2));
-    pair.translation = t;
-    pair.a[0] = a0;
-    pair.a[1] = a1;
-    pair.b[0] = b0;
-    pair.b[1] = b1;
-    return detail::rectangle_axes_gap(pair, stop_at, first.gap, slack) - radii;
+    const double radii = na.radius + pb.rss.radius;
+    return detail::lower_bound(na, pb, prune_level() + radii) - radii;
   }
 
   // The last node of A decoded and the last node of B placed, by index (see run()).
@@ -409,7 +388,7 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
   auto near = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
     const double radii = na.radius + pb.rss.radius;
-    return rectangle_lower_bound(node_pair(na, pb.rss, pb), threshold + radii) - radii < threshold;
+    return detail::lower_bound(na, pb, threshold + radii) - radii < threshold;
   };
   auto leaves = [&](const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {

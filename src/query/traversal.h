@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace swept::detail {
@@ -103,6 +104,32 @@ inline PlacedRss place(const Bvh& b, std::int32_t i, const Relative& rel) {
 inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel) {
   PlacedRss placed = place(nb, rel);
   return node_pair(na, nb, placed);
+}
+
+/// `rectangle_lower_bound(node_pair(na, pb.rss, pb), stop_at)`, to the bit, in its two steps:
+/// the first, which decides almost every node pair of a distance search, needs neither B's
+/// normal nor the pair's full frame.
+inline double lower_bound(const Rss& na, PlacedRss& pb, double stop_at) {
+  const Rss& nb = pb.rss;
+  const double a0 = na.half_length[0], a1 = na.half_length[1], b0 = nb.half_length[0], b1 = nb.half_length[1];
+  const Mat3& placed = pb.first_axes();
+  const Vec3 u = transpose_times(na.axes, placed.col(0));
+  const Vec3 v = transpose_times(na.axes, placed.col(1));
+  const Vec3 t = transpose_times(na.axes, pb.center - na.center);
+  const double slack = rectangle_slack(t, a0, a1, b0, b1);
+  stop_at += slack;
+  const ProjectionGap first = projection_gap(u, v, t, a0, a1, b0, b1, stop_at, slack);
+  if (first.decided) return (first.gap > -std::numeric_limits<double>::infinity() ? first.gap : 0.0) - slack;
+  RectanglePair pair;
+  pair.rotation.col(0) = u;
+  pair.rotation.col(1) = v;
+  pair.rotation.col(2) = transpose_times(na.axes, pb.axes().col(2));
+  pair.translation = t;
+  pair.a[0] = a0;
+  pair.a[1] = a1;
+  pair.b[0] = b0;
+  pair.b[1] = b1;
+  return rectangle_axes_gap(pair, stop_at, first.gap, slack);
 }
 
 /// A bound on |coordinate| of every vertex of A and of B placed in A's frame; 1e-12 of it
