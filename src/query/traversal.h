@@ -109,7 +109,7 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
 /// `rectangle_lower_bound(node_pair(na, pb.rss, pb), stop_at)`, to the bit, in its two steps:
 /// the first, which decides almost every node pair of a distance search, needs neither B's
 /// normal nor the pair's full frame.
-inline double lower_bound(const Rss& na, PlacedRss& pb, double stop_at) {
+[[gnu::always_inline]] inline double lower_bound(const Rss& na, PlacedRss& pb, double stop_at) {
   const Rss& nb = pb.rss;
   const double a0 = na.half_length[0], a1 = na.half_length[1], b0 = nb.half_length[0], b1 = nb.half_length[1];
   const Mat3& placed = pb.first_axes();
