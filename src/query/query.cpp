@@ -50,7 +50,17 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
     const double gap = std::abs(t.z()) - b0 * std::abs(detail::transpose_times(na.axes, placed.col(0)).z()) -
                        b1 * std::abs(detail::transpose_times(na.axes, placed.col(1)).z());
     if (gap >= limit + slack) return !(gap - slack > limit);
-    return !(rectangle_gap(node_pair(na, pb.rss, pb), limit) > limit);
+    // The rest of rectangle_gap, on the pair completed from what is already formed.
+    RectanglePair pair;
+    pair.rotation.col(0) = detail::transpose_times(na.axes, placed.col(0));
+    pair.rotation.col(1) = detail::transpose_times(na.axes, placed.col(1));
+    pair.rotation.col(2) = detail::transpose_times(na.axes, pb.axes().col(2));
+    pair.translation = t;
+    pair.a[0] = na.half_length[0];
+    pair.a[1] = na.half_length[1];
+    pair.b[0] = b0;
+    pair.b[1] = b1;
+    return !(detail::rectangle_axes_gap(pair, limit + slack, -kInf, slack) > limit);
   };
   auto leaves = [&](const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
