@@ -10,9 +10,7 @@ namespace swept {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// Relative rounding allowance of the rectangle bounds, so that a bound never exceeds the exact
-/// distance.
-constexpr double kRectSlack = 1e-12;
+constexpr double kRectSlack = detail::kRectangleSlack;
 
 inline double clamp01(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
 
@@ -72,7 +70,7 @@ double gap_bound(const RectanglePair& pr, double stop_at, bool projected) {
   if (projected) {
     const detail::ProjectionGap first = detail::projection_gap(pr.rotation.col(0), pr.rotation.col(1), t, pr.a[0],
                                                                pr.a[1], pr.b[0], pr.b[1], stop_at, slack);
-    if (first.decided) return first.gap > -kInf ? first.gap - slack : -slack;
+    if (first.decided) return first.bound(slack);
     gap = first.gap;
   }
   return detail::rectangle_axes_gap(pr, stop_at, gap, slack);

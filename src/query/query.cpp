@@ -41,26 +41,7 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
   auto overlapping = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
     const double limit = na.radius + pb.rss.radius + touch;
-    // rectangle_gap's first axis, A's normal, from B's first two axes and center alone: it
-    // separates many pairs before B's normal and the pair's full frame are formed.
-    const Mat3& placed = pb.first_axes();
-    const Vec3 t = detail::transpose_times(na.axes, pb.center - na.center);
-    const double b0 = pb.rss.half_length[0], b1 = pb.rss.half_length[1];
-    const double slack = detail::rectangle_slack(t, na.half_length[0], na.half_length[1], b0, b1);
-    const double gap = std::abs(t.z()) - b0 * std::abs(detail::transpose_times(na.axes, placed.col(0)).z()) -
-                       b1 * std::abs(detail::transpose_times(na.axes, placed.col(1)).z());
-    if (gap >= limit + slack) return !(gap - slack > limit);
-    // The rest of rectangle_gap, on the pair completed from what is already formed.
-    RectanglePair pair;
-    pair.rotation.col(0) = detail::transpose_times(na.axes, placed.col(0));
-    pair.rotation.col(1) = detail::transpose_times(na.axes, placed.col(1));
-    pair.rotation.col(2) = detail::transpose_times(na.axes, pb.axes().col(2));
-    pair.translation = t;
-    pair.a[0] = na.half_length[0];
-    pair.a[1] = na.half_length[1];
-    pair.b[0] = b0;
-    pair.b[1] = b1;
-    return !(detail::rectangle_axes_gap(pair, limit + slack, -kInf, slack) > limit);
+    return !detail::separated(na, pb, limit);
   };
   auto leaves = [&](const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {

@@ -106,12 +106,27 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
   return node_pair(na, nb, placed);
 }
 
+/// The pair of `node_pair(na, pb.rss, pb)` completed from B's first two axes `u`, `v` and center
+/// `t` already formed in na's frame: only B's normal is added.
+[[gnu::always_inline]] inline RectanglePair complete_pair(const Rss& na, PlacedRss& pb, const Vec3& u, const Vec3& v,
+                                                          const Vec3& t) {
+  RectanglePair pair;
+  pair.rotation.col(0) = u;
+  pair.rotation.col(1) = v;
+  pair.rotation.col(2) = transpose_times(na.axes, pb.axes().col(2));
+  pair.translation = t;
+  pair.a[0] = na.half_length[0];
+  pair.a[1] = na.half_length[1];
+  pair.b[0] = pb.rss.half_length[0];
+  pair.b[1] = pb.rss.half_length[1];
+  return pair;
+}
+
 /// `rectangle_lower_bound(node_pair(na, pb.rss, pb), stop_at)`, to the bit, in its two steps:
 /// the first, which decides almost every node pair of a distance search, needs neither B's
 /// normal nor the pair's full frame.
 [[gnu::always_inline]] inline double lower_bound(const Rss& na, PlacedRss& pb, double stop_at) {
-  const Rss& nb = pb.rss;
-  const double a0 = na.half_length[0], a1 = na.half_length[1], b0 = nb.half_length[0], b1 = nb.half_length[1];
+  const double a0 = na.half_length[0], a1 = na.half_length[1], b0 = pb.rss.half_length[0], b1 = pb.rss.half_length[1];
   const Mat3& placed = pb.first_axes();
   const Vec3 u = transpose_times(na.axes, placed.col(0));
   const Vec3 v = transpose_times(na.axes, placed.col(1));
@@ -119,17 +134,24 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
   const double slack = rectangle_slack(t, a0, a1, b0, b1);
   stop_at += slack;
   const ProjectionGap first = projection_gap(u, v, t, a0, a1, b0, b1, stop_at, slack);
-  if (first.decided) return (first.gap > -std::numeric_limits<double>::infinity() ? first.gap : 0.0) - slack;
-  RectanglePair pair;
-  pair.rotation.col(0) = u;
-  pair.rotation.col(1) = v;
-  pair.rotation.col(2) = transpose_times(na.axes, pb.axes().col(2));
-  pair.translation = t;
-  pair.a[0] = a0;
-  pair.a[1] = a1;
-  pair.b[0] = b0;
-  pair.b[1] = b1;
-  return rectangle_axes_gap(pair, stop_at, first.gap, slack);
+  if (first.decided) return first.bound(slack);
+  return rectangle_axes_gap(complete_pair(na, pb, u, v, t), stop_at, first.gap, slack);
+}
+
+/// `rectangle_gap(node_pair(na, pb.rss, pb), limit) > limit`, to the bit: A's normal, the first
+/// axis, is tested from B's first two axes and center alone (it separates many pairs before B's
+/// normal and the pair's full frame are formed); the rest runs on the completed pair.
+[[gnu::always_inline]] inline bool separated(const Rss& na, PlacedRss& pb, double limit) {
+  const double b0 = pb.rss.half_length[0], b1 = pb.rss.half_length[1];
+  const Mat3& placed = pb.first_axes();
+  const Vec3 u = transpose_times(na.axes, placed.col(0));
+  const Vec3 v = transpose_times(na.axes, placed.col(1));
+  const Vec3 t = transpose_times(na.axes, pb.center - na.center);
+  const double slack = rectangle_slack(t, na.half_length[0], na.half_length[1], b0, b1);
+  const double normal_gap = std::abs(t.z()) - b0 * std::abs(u.z()) - b1 * std::abs(v.z());
+  if (normal_gap >= limit + slack) return normal_gap - slack > limit;
+  return rectangle_axes_gap(complete_pair(na, pb, u, v, t), limit + slack,
+                            -std::numeric_limits<double>::infinity(), slack) > limit;
 }
 
 /// A bound on |coordinate| of every vertex of A and of B placed in A's frame; 1e-12 of it

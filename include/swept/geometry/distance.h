@@ -114,12 +114,21 @@ namespace detail {
 /// center (`t`), and decides almost every node pair. `stop_at` here already includes `slack`.
 struct ProjectionGap {
   double gap;    ///< the gap along the projection direction (−∞ when there is none)
-  bool decided;  ///< the bound is `gap − slack`; otherwise go on with `rectangle_axes_gap`
+  bool decided;  ///< `bound(slack)` is the answer; otherwise go on with `rectangle_axes_gap`
+
+  /// The decided bound: the gap with the slack taken off (−slack when the rectangles touch).
+  double bound(double slack) const {
+    return (gap > -std::numeric_limits<double>::infinity() ? gap : 0.0) - slack;
+  }
 };
 
-/// The rounding allowance of both steps: so that a bound never exceeds the exact distance.
+/// Relative rounding allowance of the rectangle bounds, so that a bound never exceeds the exact
+/// distance.
+inline constexpr double kRectangleSlack = 1e-12;
+
+/// The rounding allowance of both steps, for B's center `t` in A's frame and the half-lengths.
 inline double rectangle_slack(const Vec3& t, double a0, double a1, double b0, double b1) {
-  return 1e-12 * (std::abs(t.x()) + std::abs(t.y()) + std::abs(t.z()) + a0 + a1 + b0 + b1);
+  return kRectangleSlack * (std::abs(t.x()) + std::abs(t.y()) + std::abs(t.z()) + a0 + a1 + b0 + b1);
 }
 
 /// Two rounds (one when far apart) of alternating projection from B's center: P on A, Q on B.
