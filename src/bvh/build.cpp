@@ -618,6 +618,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   if (bvh.nodes.capacity() > used + used / 4) bvh.nodes.shrink_to_fit();  // large leaves
 
   bvh.origin = offset;
+  bvh.root = bvh.bv(0);
   bvh.triangle_ids.resize(n);
   for_each_index([&](std::size_t i) { bvh.triangle_ids[i] = order[ids[i]]; });
   weld(triangles, bvh.triangle_ids, bvh.triangles);

@@ -37,7 +37,8 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
                                std::int32_t* first_b = nullptr) {
   CollideResult out;
   if (a.empty() || b.empty()) return out;
-  const double touch = 1e-12 * detail::coordinate_bound(a, b, rel);
+  const detail::Roots roots(a, b, rel);
+  const double touch = 1e-12 * roots.coordinate_bound();
   auto overlapping = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
     const double limit = na.radius + pb.rss.radius + touch;
@@ -60,7 +61,7 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
     }
     return true;
   };
-  detail::for_each_leaf_pair(a, b, rel, overlapping, leaves);
+  detail::for_each_leaf_pair(a, b, rel, roots, overlapping, leaves);
   sort_pairs(out.contacts);
   return out;
 }
@@ -181,7 +182,9 @@ struct DistanceSearch {
 
   void run() {
     if (a.empty() || b.empty()) return;
-    const double root = bound(node_of_a(0), placed_of_b(0));
+    remember_a(0, a.root);  // the roots, decoded when the trees were built
+    remember_b(0, detail::place(b.root, rel));
+    const double root = bound(rss_a, placed_b);
     if (prune(root)) return;
     // The waiting pairs: a heap while best first, then a stack (its back on top). The buffer is
     // the thread's, reused from query to query; taken out while in use, so a nested search on

@@ -15,21 +15,6 @@
 
 namespace swept::detail {
 
-/// Model B's frame expressed in model A's frame, computed once per query.
-struct Relative {
-  Mat3 rotation = Mat3::Identity();
-  Vec3 translation = Vec3::Zero();
-
-  Relative(const Pose& pose_a, const Pose& pose_b) {
-    const Pose r = relative(pose_a, pose_b);
-    rotation = r.rotation;
-    translation = r.translation;
-  }
-  Triangle apply(const Triangle& t) const {
-    return {rotation * t.p + translation, rotation * t.q + translation, rotation * t.r + translation};
-  }
-};
-
 /// m·x and mᵀ·x, written out: every column of a pair's frame is formed by the same arithmetic,
 /// whichever of them a test asks for first.
 [[gnu::always_inline]] inline Vec3 times(const Mat3& m, const Vec3& x) {
@@ -40,6 +25,25 @@ struct Relative {
   return {m(0, 0) * x.x() + m(1, 0) * x.y() + m(2, 0) * x.z(), m(0, 1) * x.x() + m(1, 1) * x.y() + m(2, 1) * x.z(),
           m(0, 2) * x.x() + m(1, 2) * x.y() + m(2, 2) * x.z()};
 }
+
+/// Model B's frame expressed in model A's frame, computed once per query: `relative(pose_a,
+/// pose_b)` written out column by column (the same sums in the same order, without the
+/// transposed copy and the temporaries Eigen makes of it).
+struct Relative {
+  Mat3 rotation;
+  Vec3 translation;
+
+  Relative(const Pose& pose_a, const Pose& pose_b) {
+    const Mat3& ra = pose_a.rotation;
+    rotation.col(0) = transpose_times(ra, pose_b.rotation.col(0));
+    rotation.col(1) = transpose_times(ra, pose_b.rotation.col(1));
+    rotation.col(2) = transpose_times(ra, pose_b.rotation.col(2));
+    translation = transpose_times(ra, pose_b.translation) + -transpose_times(ra, pose_a.translation);
+  }
+  Triangle apply(const Triangle& t) const {
+    return {rotation * t.p + translation, rotation * t.q + translation, rotation * t.r + translation};
+  }
+};
 
 /// A node of B decoded (Node stores it compactly) and placed in A's model frame: its center at
 /// once, its axes on first use (a bounding-sphere test often settles a pair from the centers
@@ -154,16 +158,22 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
                             -std::numeric_limits<double>::infinity(), slack) > limit;
 }
 
-/// A bound on |coordinate| of every vertex of A and of B placed in A's frame; 1e-12 of it
-/// bounds every `touch_tolerance` the triangle tests will use.
-inline double coordinate_bound(const Bvh& a, const Bvh& b, const Relative& rel) {
-  auto bound = [](const Rss& v, const Vec3& c) {
-    return c.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
-  };
-  const Rss ra = a.bv(0);
-  const Rss rb = b.bv(0);
-  return std::max(bound(ra, ra.center), bound(rb, rel.rotation * rb.center + rel.translation));
-}
+/// The roots of a query's two trees, each decoded once: A's in its model frame, B's placed in
+/// A's frame.
+struct Roots {
+  Rss a;
+  PlacedRss b;
+  Roots(const Bvh& tree_a, const Bvh& tree_b, const Relative& rel) : a(tree_a.root), b(place(tree_b.root, rel)) {}
+
+  /// A bound on |coordinate| of every vertex of A and of B placed in A's frame; 1e-12 of it
+  /// bounds every `touch_tolerance` the triangle tests will use.
+  double coordinate_bound() const {
+    auto bound = [](const Rss& v, const Vec3& c) {
+      return c.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
+    };
+    return std::max(bound(a, a.center), bound(b.rss, b.center));
+  }
+};
 
 /// True when node a (rather than node b) should be split: the larger one (Node::size).
 inline bool descend_a(const Node& a, const Node& b) {
@@ -224,18 +234,17 @@ class PairStack {
 /// `leaves(na, nb)` visits every kept pair of leaves and returns false to stop the traversal.
 /// (The distance search orders its pairs by their bounds instead and keeps its own loop,
 /// query.cpp.)
+/// `roots` are the two trees' roots (Roots); the overload without them decodes them.
 template <class Keep, class Leaves>
-void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, Keep&& keep, Leaves&& leaves) {
+void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, const Roots& roots, Keep&& keep,
+                        Leaves&& leaves) {
   if (a.empty() || b.empty()) return;
-  {
-    PlacedRss root_b = place(b, 0, rel);
-    if (!keep(0, 0, a.bv(0), root_b)) return;
-  }
+  Rss rss_a = roots.a;      // the node memo_a of A, decoded
+  PlacedRss placed = roots.b;  // the node memo_b of B, placed
+  std::int32_t memo_a = 0, memo_b = 0;
+  if (!keep(0, 0, rss_a, placed)) return;
   PairStack stack(a, b);
   stack.push(0, 0, 0.0);
-  std::int32_t memo_a = -1, memo_b = -1;  // the nodes held in rss_a and placed
-  Rss rss_a;
-  PlacedRss placed;
   while (!stack.empty()) {
     const PairEntry e = stack.pop();
     const Node& na = a.nodes[e.a];
@@ -274,6 +283,12 @@ void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, Keep&& 
       }
     }
   }
+}
+
+template <class Keep, class Leaves>
+void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, Keep&& keep, Leaves&& leaves) {
+  if (a.empty() || b.empty()) return;
+  for_each_leaf_pair(a, b, rel, Roots(a, b, rel), keep, leaves);
 }
 
 }  // namespace swept::detail

@@ -57,6 +57,12 @@ void expect_containment(const Bvh& bvh, const std::string& what) {
 
 void expect_structure(const Bvh& bvh, std::size_t n, int leaf_size) {
   ASSERT_FALSE(bvh.empty());
+  // The root every query starts from is the first node, decoded (a cache that must not drift).
+  const Rss root = bvh.bv(0);
+  EXPECT_EQ(bvh.root.axes, root.axes);
+  EXPECT_EQ(bvh.root.center, root.center);
+  EXPECT_EQ(bvh.root.half_length, root.half_length);
+  EXPECT_EQ(bvh.root.radius, root.radius);
   std::size_t in_leaves = 0;
   for (const Node& node : bvh.nodes) {
     if (node.is_leaf()) {

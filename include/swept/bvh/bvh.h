@@ -174,6 +174,7 @@ struct Bvh {
   BuildConfig config;                     ///< how it was built
   int depth = 0;                          ///< levels: 1 for a single leaf
   double extent = 0.0;                    ///< diagonal of the model's bounding box
+  Rss root;                               ///< bv(0), decoded once by build_bvh: every query starts there
 
   bool empty() const { return nodes.empty(); }
   /// The RSS of node `i`, in the model frame (decoded: see `decode_rss`).
