@@ -39,6 +39,12 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
   if (a.empty() || b.empty()) return out;
   const detail::Roots roots(a, b, rel);
   const double touch = 1e-12 * roots.coordinate_bound();
+  // Far apart, the balls around the two roots settle the query from their centers (counted as
+  // the root pair's test).
+  if (detail::balls_apart(roots.a, roots.b, touch)) {
+    out.stats.bv_tests = 1;
+    return out;
+  }
   auto overlapping = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
     const double limit = na.radius + pb.rss.radius + touch;

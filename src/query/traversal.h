@@ -142,6 +142,20 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
   return rectangle_axes_gap(complete_pair(na, pb, u, v, t), stop_at, first.gap, slack);
 }
 
+/// True when the balls around A's node `na` and B's node `pb` placed in A's frame (each
+/// rectangle's circumscribed disc grown by its radius) are more than `limit` apart: the centers
+/// settle a far-apart pair without the axes. The allowance for rounding is the rectangle tests'
+/// (kRectangleSlack), on the centers' coordinates as well as the lengths.
+[[gnu::always_inline]] inline bool balls_apart(const Rss& na, const PlacedRss& pb, double limit) {
+  const double a0 = na.half_length[0], a1 = na.half_length[1];
+  const double b0 = pb.rss.half_length[0], b1 = pb.rss.half_length[1];
+  const double reach = std::sqrt(a0 * a0 + a1 * a1) + std::sqrt(b0 * b0 + b1 * b1) + na.radius + pb.rss.radius;
+  const double slack = kRectangleSlack * (na.center.cwiseAbs().sum() + pb.center.cwiseAbs().sum() + a0 + a1 + b0 + b1 +
+                                          na.radius + pb.rss.radius);
+  const double clear = reach + limit + slack;
+  return (pb.center - na.center).squaredNorm() > clear * clear;
+}
+
 /// `rectangle_gap(node_pair(na, pb.rss, pb), limit) > limit`, to the bit: A's normal, the first
 /// axis, is tested from B's first two axes and center alone (it separates many pairs before B's
 /// normal and the pair's full frame are formed); the rest runs on the completed pair.

@@ -501,5 +501,33 @@ TEST(QueryEdgeCases, SingleTriangleModelsAndIdenticalPoses) {
   EXPECT_TRUE(tolerance(a, Pose::identity(), a, Pose::from_translation({0, 0, 2.5}), {.tolerance = 2.50001}).within);
 }
 
+// Collide settles far-apart models from the balls around the roots (each rectangle's
+// circumscribed disc grown by its radius). Two flat 4 × 2 rectangles (two triangles each) lying in
+// one plane, corner to corner along their common diagonal, touch at one point, where their
+// circumscribed discs touch too: the ball test is tight there and must not call them apart. Moved
+// apart along the diagonal by a little more than the rounding, they are apart (by hand: the
+// corners (2, 1) and (2, 1) + δ·(2, 1)/√5).
+TEST(QueryEdgeCases, RectanglesTouchingCornerToCornerWhereTheirBallsTouch) {
+  auto rectangle = [](const Vec3& c) {
+    const Vec3 p = c + Vec3(-2, -1, 0), q = c + Vec3(2, -1, 0), r = c + Vec3(2, 1, 0), s = c + Vec3(-2, 1, 0);
+    return std::vector<Triangle>{{p, q, r}, {p, r, s}};
+  };
+  const Vec3 diagonal = Vec3(2, 1, 0) / std::sqrt(5.0);
+  Rng rng(5);
+  for (const Fitter f : test::every_fitter()) {
+    const Bvh a = build(rectangle(Vec3::Zero()), f);
+    const Bvh b_touching = build(rectangle(Vec3(4, 2, 0)), f);
+    const Bvh b_apart = build(rectangle(Vec3(4, 2, 0) + 1e-6 * diagonal), f);
+    // At the identity, and both moved by one rigid motion far from the origin.
+    for (int k = 0; k < 4; ++k) {
+      const Pose both = k == 0 ? Pose::identity() : Pose{rng.rotation(), rng.vec(-1e3, 1e3)};
+      const std::string what = std::string(to_string(f)) + " pose " + std::to_string(k);
+      EXPECT_TRUE(collide(a, both, b_touching, both).colliding) << what;
+      EXPECT_FALSE(collide(a, both, b_apart, both).colliding) << what;
+      EXPECT_NEAR(distance(a, both, b_apart, both).distance, 1e-6, 1e-9) << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace swept
