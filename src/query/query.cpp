@@ -136,7 +136,9 @@ struct DistanceSearch {
   double bound(const Rss& na, detail::PlacedRss& pb) {
     ++stats.bv_tests;
     const double radii = na.radius + pb.rss.radius;
-    return detail::lower_bound(na, pb, prune_level() + radii) - radii;
+    // A bound at or past the prune level is compared with `best_level` alone, unless the level
+    // is `enough`, whose smallest pruned bound is reported (pruned_enough): only then its value.
+    return detail::lower_bound(na, pb, prune_level() + radii, enough < best_level) - radii;
   }
 
   // The last node of A decoded and the last node of B placed, by index (see run()).
@@ -388,7 +390,7 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
   auto near = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
     ++out.stats.bv_tests;
     const double radii = na.radius + pb.rss.radius;
-    return detail::lower_bound(na, pb, threshold + radii) - radii < threshold;
+    return detail::lower_bound(na, pb, threshold + radii, false) - radii < threshold;
   };
   auto leaves = [&](const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {

@@ -128,8 +128,11 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
 
 /// `rectangle_lower_bound(node_pair(na, pb.rss, pb), stop_at)`, to the bit, in its two steps:
 /// the first, which decides almost every node pair of a distance search, needs neither B's
-/// normal nor the pair's full frame.
-[[gnu::always_inline]] inline double lower_bound(const Rss& na, PlacedRss& pb, double stop_at) {
+/// normal nor the pair's full frame. `value_past_stop` false: a bound that surely reaches
+/// `stop_at` may come back as +∞ (projection_gap), for callers that only compare it with
+/// `stop_at`.
+[[gnu::always_inline]] inline double lower_bound(const Rss& na, PlacedRss& pb, double stop_at,
+                                                 bool value_past_stop = true) {
   const double a0 = na.half_length[0], a1 = na.half_length[1], b0 = pb.rss.half_length[0], b1 = pb.rss.half_length[1];
   const Mat3& placed = pb.first_axes();
   const Vec3 u = transpose_times(na.axes, placed.col(0));
@@ -137,7 +140,7 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
   const Vec3 t = transpose_times(na.axes, pb.center - na.center);
   const double slack = rectangle_slack(t, a0, a1, b0, b1);
   stop_at += slack;
-  const ProjectionGap first = projection_gap(u, v, t, a0, a1, b0, b1, stop_at, slack);
+  const ProjectionGap first = projection_gap(u, v, t, a0, a1, b0, b1, stop_at, slack, value_past_stop);
   if (first.decided) return first.bound(slack);
   return rectangle_axes_gap(complete_pair(na, pb, u, v, t), stop_at, first.gap, slack);
 }

@@ -285,7 +285,7 @@ TEST(RssDistance, IsALowerBoundAndRectangleDistanceIsExact) {
 // any stop level, whether the first step decides or not.
 TEST(RssDistance, TwoStepBoundIsTheLowerBoundToTheBit) {
   Rng rng(22);
-  int decided = 0, second = 0;
+  int decided = 0, second = 0, past_stop = 0;
   for (int it = 0; it < 4000; ++it) {
     Rss a, b;
     a.axes = rng.rotation();
@@ -312,10 +312,61 @@ TEST(RssDistance, TwoStepBoundIsTheLowerBoundToTheBit) {
       }
       EXPECT_EQ(two_step, rectangle_lower_bound(pair, stop)) << it << " stop " << stop;
       EXPECT_LE(two_step, exact + 1e-14 * (2 * spread + 4)) << it;
+      // For callers that only compare with the level: +∞ stands for a bound that reaches it;
+      // every other answer is the same to the bit.
+      const detail::ProjectionGap quick =
+          detail::projection_gap(pair.rotation.col(0), pair.rotation.col(1), pair.translation, pair.a[0], pair.a[1],
+                                 pair.b[0], pair.b[1], stop + slack, slack, /*value_past_stop=*/false);
+      if (quick.gap == std::numeric_limits<double>::infinity()) {
+        ++past_stop;
+        EXPECT_TRUE(first.decided) << it;
+        EXPECT_GE(first.gap, stop + slack) << it << " stop " << stop;
+      } else {
+        EXPECT_EQ(quick.decided, first.decided) << it;
+        EXPECT_EQ(quick.gap, first.gap) << it;
+      }
     }
   }
   EXPECT_GT(decided, 1000);
   EXPECT_GT(second, 1000);
+  EXPECT_GT(past_stop, 1000);
+}
+
+// The quick reach test (`value_past_stop` false) where it is tight: the projection gap equals the
+// level up to a few units in the last place. It may answer +∞ only when the gap, computed with
+// the square root and the division, is at or past the level.
+TEST(RssDistance, QuickReachTestNeverClaimsAGapBelowTheLevel) {
+  Rng rng(23);
+  int quick = 0, slow = 0;
+  for (int it = 0; it < 20000; ++it) {
+    Rss a, b;
+    a.axes = rng.rotation();
+    b.axes = rng.rotation();
+    a.center = rng.vec(-1, 1);
+    b.center = a.center + rng.vec(-1, 1).normalized() * rng.uniform(3, 30);
+    a.half_length = {rng.uniform(0, 1), rng.uniform(0, 0.5)};
+    b.half_length = {rng.uniform(0, 1), rng.uniform(0, 0.5)};
+    const RectanglePair pair = rectangle_pair(a, b);
+    const Vec3 u = pair.rotation.col(0), v = pair.rotation.col(1), t = pair.translation;
+    const double slack = detail::rectangle_slack(t, pair.a[0], pair.a[1], pair.b[0], pair.b[1]);
+    const detail::ProjectionGap exact = detail::projection_gap(u, v, t, pair.a[0], pair.a[1], pair.b[0], pair.b[1],
+                                                               std::numeric_limits<double>::infinity(), slack);
+    // Levels within ±8 ulp and ±1e-13 of the gap itself.
+    for (const double level : {exact.gap, std::nextafter(exact.gap, 0.0), std::nextafter(exact.gap, 1e300),
+                               exact.gap * (1 - 8e-16), exact.gap * (1 + 8e-16), exact.gap * (1 - 1e-13),
+                               exact.gap * (1 - 2e-13)}) {
+      const detail::ProjectionGap q =
+          detail::projection_gap(u, v, t, pair.a[0], pair.a[1], pair.b[0], pair.b[1], level, slack, false);
+      if (q.gap == std::numeric_limits<double>::infinity()) {
+        ++quick;
+        EXPECT_GE(exact.gap, level) << it;
+      } else {
+        ++slow;
+      }
+    }
+  }
+  EXPECT_GT(quick, 1000);  // it does answer, below the gap by more than its margin
+  EXPECT_GT(slow, 1000);   // and leaves the last ulps to the division
 }
 
 }  // namespace

@@ -135,9 +135,12 @@ inline double rectangle_slack(const Vec3& t, double a0, double a1, double b0, do
 /// The direction Q − P converges to the closest-pair direction, and the gap along it is a valid
 /// bound anyway. |Q − P| is an upper bound on the distance: when it is below `stop_at`, no axis
 /// can reach `stop_at` and the remaining axes are skipped.
+/// `value_past_stop` false: a caller that only needs to know that the gap reaches `stop_at` gets
+/// +∞ for such a gap when that is sure without the square root and the division (the squared
+/// comparison below, with a margin far above their rounding); every other answer is the same.
 [[gnu::always_inline]] inline ProjectionGap projection_gap(const Vec3& u, const Vec3& v, const Vec3& t, double a0,
                                                            double a1, double b0, double b1, double stop_at,
-                                                           double slack) {
+                                                           double slack, bool value_past_stop = true) {
   auto onto_a = [&](const Vec3& x) { return Vec3(std::clamp(x.x(), -a0, a0), std::clamp(x.y(), -a1, a1), 0.0); };
   auto onto_b = [&](const Vec3& x) {
     const Vec3 d = x - t;
@@ -157,10 +160,16 @@ inline double rectangle_slack(const Vec3& t, double a0, double a1, double b0, do
   const Vec3 n = q - p;
   const double nn = n.squaredNorm();
   if (nn > 0.0) {
-    const double len = std::sqrt(nn);
     const double ext =
         a0 * std::abs(n.x()) + a1 * std::abs(n.y()) + b0 * std::abs(n.dot(u)) + b1 * std::abs(n.dot(v));
-    const double gap = (std::abs(t.dot(n)) - ext) / len;
+    const double rise = std::abs(t.dot(n)) - ext;
+    // rise / √nn ≥ stop_at (1 + 5e-14) in exact arithmetic, from the rounded squares (a few units
+    // of 1.1e-16 each), so the rounded gap below is ≥ stop_at too. Away from under- and overflow.
+    if (!value_past_stop && stop_at > 1e-50 && stop_at < 1e50 && nn > 1e-100 && nn < 1e100 && rise > 0.0 &&
+        rise * rise > (1.0 + 1e-13) * (stop_at * stop_at) * nn)
+      return {std::numeric_limits<double>::infinity(), true};
+    const double len = std::sqrt(nn);
+    const double gap = rise / len;
     return {gap, gap >= stop_at || len + slack < stop_at};
   }
   // The rectangles touch: no positive bound exists.
