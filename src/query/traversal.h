@@ -256,7 +256,7 @@ template <class Keep, class Leaves>
 void for_each_leaf_pair(const Bvh& a, const Bvh& b, const Relative& rel, const Roots& roots, Keep&& keep,
                         Leaves&& leaves) {
   if (a.empty() || b.empty()) return;
-  Rss rss_a = roots.a;      // the node memo_a of A, decoded
+  Rss rss_a = roots.a;         // the node memo_a of A, decoded
   PlacedRss placed = roots.b;  // the node memo_b of B, placed
   std::int32_t memo_a = 0, memo_b = 0;
   if (!keep(0, 0, rss_a, placed)) return;

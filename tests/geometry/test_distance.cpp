@@ -130,6 +130,47 @@ TEST(TriangleDistance, ParallelFacesAtKnownGap) {
   }
 }
 
+// Cheap rejections run before the full evaluation of a triangle pair; a rejected pair must be at
+// least the limit away, up to rounding, and a limit above the distance by more than rounding must
+// give the full evaluation's answer bit for bit. The bounding-box gap is tight for faces parallel
+// to a coordinate plane (their distance is the boxes' gap along that axis when they overlap
+// across it), so here the box test meets its own limit: pairs far from the origin (coordinates
+// ~1e4), gaps from 1e-9 to 1, limits within 1e-12 of the distance. (A box test whose rounding
+// allowance pointed the wrong way, or one that read a gap where there is none, fails it.)
+TEST(TriangleDistance, CheapRejectionsAreRightNearTheirLimit) {
+  Rng rng(8);
+  int accepted = 0, rejected = 0;
+  for (int it = 0; it < 20000; ++it) {
+    const int axis = it % 3;
+    const Vec3 off = rng.vec(-1e4, 1e4);
+    const double gap = std::pow(10.0, rng.uniform(-9, 0));
+    auto on_plane = [&](double h, double spread) {
+      Vec3 p[3];
+      for (Vec3& v : p) {
+        v = off + rng.vec(-spread, spread);
+        v[axis] = off[axis] + h;
+      }
+      return Triangle{p[0], p[1], p[2]};
+    };
+    const Triangle a = on_plane(0.0, 1.0), b = on_plane(gap, it % 2 ? 1.0 : 0.1);
+    const double d = triangle_distance(a, b).distance;
+    for (const double limit : {d * (1 - 1e-12), d, d * (1 + 1e-15), d * (1 + 1e-12), d * (1 + 1e-9)}) {
+      TriangleDistance r;
+      if (triangle_distance_below(a, b, limit, r)) {
+        ++accepted;
+        EXPECT_EQ(r.distance, d) << it;
+        EXPECT_LE(r.distance, limit) << it;
+      } else {
+        ++rejected;
+        EXPECT_GE(d, limit * (1 - 1e-15)) << it << " gap " << gap;
+        EXPECT_LT(limit, d * (1 + 1e-13)) << it << " gap " << gap << ": rejected above the distance";
+      }
+    }
+  }
+  EXPECT_GT(accepted, 30000);
+  EXPECT_GT(rejected, 20000);
+}
+
 TEST(TrianglesIntersect, TouchingCountsAsIntersectingEvenFarFromTheOrigin) {
   for (const Vec3& o : {Vec3(0, 0, 0), Vec3(1e6, 1e6, -1e6)}) {
     // Coplanar overlap.
