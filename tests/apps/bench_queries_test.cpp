@@ -1,6 +1,7 @@
 // `swept bench queries` end to end on two small meshes: a row per fitter and leaf size, the memory
-// per triangle counted here from the tree layout, FCL's node-pair counter, the split rule option
-// and its errors (no timing assertions).
+// per triangle counted here from the tree layout, FCL's node-pair counters (distance and collide),
+// the collide answers checked against FCL's, the split rule option and its errors (no timing
+// assertions).
 #include "support/cli_support.h"
 
 #include "swept/bvh/bvh.h"
@@ -82,6 +83,7 @@ TEST_F(BenchQueries, RowsPerFitterAndLeafSizeWithMemoryAndFclNodePairs) {
       EXPECT_DOUBLE_EQ(rows[name + "/leaf1"]["bytes_per_triangle"].get<double>(), leaf1) << name;
       EXPECT_LT(rows[name + "/leaf2"]["bytes_per_triangle"].get<double>(), leaf1) << name;
       EXPECT_GT(rows[name + "/leaf1"]["bv_tests_per_distance"].get<double>(), 0.0) << name;
+      EXPECT_GE(rows[name + "/leaf1"]["bv_tests_per_collide"].get<double>(), 1.0) << name;
     }
     // FCL's node pairs per distance query come from its own counter now.
     for (const char* fcl : {"fcl-obbrss", "fcl-rss"}) {
@@ -89,8 +91,15 @@ TEST_F(BenchQueries, RowsPerFitterAndLeafSizeWithMemoryAndFclNodePairs) {
       EXPECT_GT(rows[fcl]["bv_tests_per_distance"].get<double>(), 0.0) << fcl;
       EXPECT_TRUE(rows[fcl]["bytes_per_triangle"].is_null()) << fcl;
     }
+    // FCL's collide node pairs: counted for OBBRSS (its oriented traversal), not for RSS (its
+    // collide copies the models).
+    EXPECT_GE(rows["fcl-obbrss"]["bv_tests_per_collide"].get<double>(), 1.0);
+    EXPECT_TRUE(rows["fcl-rss"]["bv_tests_per_collide"].is_null());
   }
   EXPECT_LE(doc["max_rel_distance_diff_vs_fcl"].get<double>(), 1e-9);
+  // Every pose's collide answer checked against FCL's: overlapping, near and far, 3 each.
+  EXPECT_EQ(doc["collide_answers_compared_with_fcl"].get<int>(), 9);
+  EXPECT_EQ(doc["collide_answers_differing_from_fcl"].get<int>(), 0);
 }
 
 TEST_F(BenchQueries, SplitRuleAndBadOptions) {

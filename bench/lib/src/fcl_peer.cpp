@@ -3,6 +3,8 @@
 #include "swept/bench/fcl_model.h"
 
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/detail/traversal/collision/mesh_collision_traversal_node.h>
+#include <fcl/narrowphase/detail/traversal/collision_node.h>
 #include <fcl/narrowphase/detail/traversal/distance/mesh_distance_traversal_node.h>
 #include <fcl/narrowphase/distance.h>
 
@@ -69,6 +71,20 @@ FclDistanceStats FclMesh::distance_stats(const Pose& pose, const FclMesh& other,
         impl_->geometry.get(), pose, other.impl_->geometry.get(), other_pose);
   return counted_distance<fcl::detail::MeshDistanceTraversalNodeRSS<double>, fcl::RSSd>(
       impl_->geometry.get(), pose, other.impl_->geometry.get(), other_pose);
+}
+
+std::optional<FclCollideStats> FclMesh::collide_stats(const Pose& pose, const FclMesh& other, const Pose& other_pose) const {
+  if (volume_ != FclVolume::obbrss) return std::nullopt;
+  // fcl::collide's orientedMeshCollide for OBBRSS: its traversal node, initialize, collide.
+  fcl::CollisionRequestd request;
+  fcl::CollisionResultd result;
+  fcl::detail::MeshCollisionTraversalNodeOBBRSS<double> node;
+  fcl::detail::initialize(node, *static_cast<const fcl::BVHModel<fcl::OBBRSSd>*>(impl_->geometry.get()), to_fcl(pose),
+                          *static_cast<const fcl::BVHModel<fcl::OBBRSSd>*>(other.impl_->geometry.get()), to_fcl(other_pose),
+                          request, result);
+  node.enableStatistics(true);
+  fcl::detail::collide(&node);
+  return FclCollideStats{result.isCollision(), node.num_bv_tests, node.num_leaf_tests};
 }
 
 }  // namespace swept::bench

@@ -60,6 +60,7 @@ struct EngineResult {
   std::string engine;
   double collide_us = 0, distance_us = 0, tolerance_us = 0;
   double bv_tests = -1;  ///< mean BV tests per distance query; < 0: not reported by the engine
+  double collide_bv_tests = -1;  ///< mean BV tests per collide query; < 0: not reported by the engine
   double bytes_per_triangle = -1;  ///< both trees' memory over both meshes' triangles; < 0: not reported
 };
 
@@ -117,6 +118,8 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
   const Pose id;
 
   double max_rel_diff = 0.0;
+  std::size_t collide_disagreements = 0;  ///< poses where swept's collide answer is not FCL OBBRSS's
+  std::size_t collide_compared = 0;
   std::vector<std::vector<EngineResult>> all;
   for (const PoseSet& set : sets) {
     std::vector<EngineResult> results;
@@ -126,9 +129,13 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
       r.collide_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + collide(e.a, id, e.b, p).colliding; });
       r.distance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + distance(e.a, id, e.b, p).distance; });
       r.tolerance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + tolerance(e.a, id, e.b, p, {.tolerance = tol}).within; });
-      double bv = 0;
-      for (const Pose& p : set.poses) bv += static_cast<double>(distance(e.a, id, e.b, p).stats.bv_tests);
+      double bv = 0, collide_bv = 0;
+      for (const Pose& p : set.poses) {
+        bv += static_cast<double>(distance(e.a, id, e.b, p).stats.bv_tests);
+        collide_bv += static_cast<double>(collide(e.a, id, e.b, p).stats.bv_tests);
+      }
       r.bv_tests = bv / static_cast<double>(set.poses.size());
+      r.collide_bv_tests = collide_bv / static_cast<double>(set.poses.size());
       r.bytes_per_triangle = static_cast<double>(e.a.memory_bytes() + e.b.memory_bytes()) /
                              static_cast<double>(e.a.triangles.size() + e.b.triangles.size());
       results.push_back(r);
@@ -140,8 +147,20 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
       // FCL has no tolerance query: its nearest equivalent is a distance query and a comparison.
       r.tolerance_us = mean_us(set.poses, [&](const Pose& p) { sink = sink + (e.a->distance(id, *e.b, p) < tol); });
       // One untimed pass: FCL's node-pair counter, and the answers against swept's reference.
-      double bv = 0;
+      double bv = 0, collide_bv = 0;
+      bool collide_counted = true;
       for (const Pose& p : set.poses) {
+        // Collide: FCL's counter where its collide runs a traversal of the models as they are,
+        // and its answer against swept's (on the first row's trees, like the distances).
+        if (const std::optional<FclCollideStats> c = e.a->collide_stats(id, *e.b, p)) {
+          if (c->colliding != e.a->collide(id, *e.b, p))
+            throw std::runtime_error("FCL's counted collide query differs from fcl::collide");
+          collide_bv += static_cast<double>(c->bv_tests);
+          ++collide_compared;
+          if (c->colliding != collide(ref_a, id, ref_b, p).colliding) ++collide_disagreements;
+        } else {
+          collide_counted = false;
+        }
         const double theirs = e.a->distance(id, *e.b, p);
         const FclDistanceStats st = e.a->distance_stats(id, *e.b, p);
         if (st.distance != theirs) throw std::runtime_error("FCL's counted distance query differs from fcl::distance");
@@ -152,6 +171,7 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
         max_rel_diff = std::max(max_rel_diff, diff);
       }
       r.bv_tests = bv / static_cast<double>(set.poses.size());
+      if (collide_counted) r.collide_bv_tests = collide_bv / static_cast<double>(set.poses.size());
       results.push_back(r);
     }
     all.push_back(std::move(results));
@@ -184,11 +204,14 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
                            {"distance_us", r.distance_us},
                            {"tolerance_us", r.tolerance_us},
                            {"bv_tests_per_distance", r.bv_tests >= 0 ? nlohmann::ordered_json(r.bv_tests) : nlohmann::ordered_json()},
+                           {"bv_tests_per_collide", r.collide_bv_tests >= 0 ? nlohmann::ordered_json(r.collide_bv_tests) : nlohmann::ordered_json()},
                            {"bytes_per_triangle", r.bytes_per_triangle >= 0 ? nlohmann::ordered_json(r.bytes_per_triangle) : nlohmann::ordered_json()}});
       }
       j["sets"].push_back({{"name", sets[s].name}, {"poses", sets[s].poses.size()}, {"results", results}});
     }
     j["max_rel_distance_diff_vs_fcl"] = max_rel_diff;
+    j["collide_answers_differing_from_fcl"] = collide_disagreements;
+    j["collide_answers_compared_with_fcl"] = collide_compared;
     out << json_text(j, 2) << "\n";
     log << "batch of " << batch.size() << " distance queries: " << fmt_fixed(t1 * 1e3, 1) << " ms on 1 thread, "
               << fmt_fixed(t2 * 1e3, 1) << " ms on 2 threads, speedup " << fmt_fixed(t1 / t2, 2) << "x\n";
@@ -197,7 +220,7 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
   out << "A: " << o.file_a << " (" << ta.size() << " triangles)\nB: " << o.file_b << " (" << tb.size()
             << " triangles)\nmodel size " << fmt_sci(size) << ", tolerance " << fmt_sci(tol) << ", " << o.poses
             << " poses per set, seed " << o.seed << ", split rule " << to_string(o.split) << "\n\n";
-  Table table({"set", "engine", "collide us", "distance us", "tolerance us", "BV tests/distance", "bytes/tri",
+  Table table({"set", "engine", "collide us", "distance us", "tolerance us", "BV tests/collide", "BV tests/distance", "bytes/tri",
                "collide x vs fcl-obbrss", "distance x vs fcl-obbrss"});
   for (std::size_t s = 0; s < sets.size(); ++s) {
     const EngineResult* fcl = nullptr;
@@ -205,7 +228,8 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
       if (r.engine == "fcl-obbrss") fcl = &r;
     for (const EngineResult& r : all[s]) {
       table.add({sets[s].name, r.engine, fmt_fixed(r.collide_us, 2), fmt_fixed(r.distance_us, 2),
-                 fmt_fixed(r.tolerance_us, 2), r.bv_tests >= 0 ? fmt_fixed(r.bv_tests, 1) : "n/a",
+                 fmt_fixed(r.tolerance_us, 2), r.collide_bv_tests >= 0 ? fmt_fixed(r.collide_bv_tests, 1) : "n/a",
+                 r.bv_tests >= 0 ? fmt_fixed(r.bv_tests, 1) : "n/a",
                  r.bytes_per_triangle >= 0 ? fmt_fixed(r.bytes_per_triangle, 0) : "n/a",
                  fmt_fixed(fcl->collide_us / r.collide_us, 2), fmt_fixed(fcl->distance_us / r.distance_us, 2)});
     }
@@ -214,8 +238,11 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
   out << "\n(Times are the mean thread CPU time per query. FCL has no tolerance query: its column is\n"
                " a distance query and a comparison. BV tests: swept counts every RSS pair test of the query,\n"
                " its first-contact search included; FCL its traversal node's num_bv_tests, the same query run\n"
-               " as fcl::distance runs it.)\n"
+               " as fcl::distance (or fcl::collide) runs it. FCL's RSS collide copies both models and\n"
+               " transforms their vertices on every call, hence its time; its node pairs are not counted.)\n"
             << "largest relative distance difference vs FCL: " << fmt_sci(max_rel_diff) << "\n"
+            << "collide answers that differ from FCL OBBRSS's: " << collide_disagreements << " of "
+            << collide_compared << " poses\n"
             << "batch of " << batch.size() << " distance queries (swept-inertia): " << fmt_fixed(t1 * 1e3, 1)
             << " ms on 1 thread, " << fmt_fixed(t2 * 1e3, 1) << " ms on 2 threads, speedup "
             << fmt_fixed(t1 / t2, 2) << "x\n";

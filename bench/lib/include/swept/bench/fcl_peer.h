@@ -5,6 +5,7 @@
 #include "swept/geometry/types.h"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,13 @@ std::string_view fcl_engine_name(FclVolume v);
 /// One FCL distance query with FCL's own counters (its traversal node's statistics).
 struct FclDistanceStats {
   double distance = 0.0;
+  long bv_tests = 0;    ///< bounding-volume pair tests (FCL's num_bv_tests)
+  long leaf_tests = 0;  ///< triangle pair tests (num_leaf_tests)
+};
+
+/// One FCL collide query with FCL's own counters.
+struct FclCollideStats {
+  bool colliding = false;
   long bv_tests = 0;    ///< bounding-volume pair tests (FCL's num_bv_tests)
   long leaf_tests = 0;  ///< triangle pair tests (num_leaf_tests)
 };
@@ -40,6 +48,11 @@ class FclMesh {
   /// The same query run through FCL's traversal node directly, as fcl::distance runs it, to
   /// read its counters of bounding-volume and triangle pair tests (`other` has this volume type).
   FclDistanceStats distance_stats(const Pose& pose, const FclMesh& other, const Pose& other_pose) const;
+  /// The collide query run through FCL's traversal node directly, as fcl::collide runs it for
+  /// OBBRSS models (its oriented traversal), with its counters; nullopt for RSS models, whose
+  /// fcl::collide copies both models and transforms their vertices on every call (that copy,
+  /// not the traversal, is most of its time).
+  std::optional<FclCollideStats> collide_stats(const Pose& pose, const FclMesh& other, const Pose& other_pose) const;
 
  private:
   struct Impl;
