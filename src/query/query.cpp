@@ -1,5 +1,5 @@
 // Collide, distance and tolerance queries over two RSS trees (Larsen et al. 1999; PQP's
-// traversal scheme): B is placed in A's frame once per query and the larger node of a pair is
+// traversal scheme): B is placed in A's frame once per query and the node of larger surface area
 // split. Collide and proximity visit node pairs depth first from a fixed-capacity stack; the
 // distance search takes the pending pair of smallest bound first for its first dives, then
 // goes on depth first, nearer child pair first (DistanceSearch::run).

@@ -192,11 +192,12 @@ struct Roots {
   }
 };
 
-/// True when node a (rather than node b) should be split: the larger one (Node::size).
+/// True when node a (rather than node b) should be split: the one of larger surface area
+/// (Node::area).
 inline bool descend_a(const Node& a, const Node& b) {
   if (b.is_leaf()) return true;
   if (a.is_leaf()) return false;
-  return a.size() >= b.size();
+  return a.area() >= b.area();
 }
 
 /// A node pair waiting on the traversal stack, with its lower bound.

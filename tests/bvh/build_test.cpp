@@ -331,5 +331,34 @@ TEST(BuildBvh, StatsAddUp) {
   EXPECT_GE(surface_area(bvh->bv(0)), 2 * (2 + 3 + 6) - 1e-9);
 }
 
+// Node::area decides which node of a pair a traversal splits. Its values, derived by hand from
+// the RSS's shape (two rectangles 2a × 2b, half-cylinders of radius r along the perimeter
+// 4(a + b), and a sphere's worth of corners: 8ab + 4πr(a + b) + 4πr²), and against the
+// fitters' surface_area of the decoded RSS on every node of a tree.
+TEST(BuildBvh, NodeAreaIsTheRssSurfaceArea) {
+  const double pi = std::numbers::pi;
+  auto node = [](float a, float b, float r) {
+    Node n;
+    n.half_length = {a, b};
+    n.radius = r;
+    return n;
+  };
+  EXPECT_NEAR(node(1, 2, 0.5f).area(), 16.0 + 7.0 * pi, 1e-5);  // 16 + 6π + π
+  EXPECT_NEAR(node(0, 0, 2).area(), 16.0 * pi, 1e-5);           // a sphere of radius 2
+  EXPECT_NEAR(node(3, 1, 0).area(), 24.0, 1e-5);                 // a flat rectangle, both sides
+  EXPECT_NEAR(node(5, 0, 1).area(), 24.0 * pi, 1e-4);            // a capsule: 2π·1·10 + 4π
+  // A long thin node has the larger half-lengths plus radius, the square one the larger area.
+  EXPECT_LT(node(4, 0, 0.1f).area(), node(1.5f, 1.5f, 0.1f).area());
+
+  Rng rng(7);
+  const auto tris = test::random_triangles(rng, 300, 100.0, 20.0);
+  const auto bvh = build_bvh(tris, {.leaf_size = 2});
+  ASSERT_TRUE(bvh);
+  for (std::size_t i = 0; i < bvh->nodes.size(); ++i) {
+    const double want = surface_area(bvh->bv(i));
+    EXPECT_NEAR(bvh->nodes[i].area(), want, 1e-5 * want + 1e-9) << "node " << i;
+  }
+}
+
 }  // namespace
 }  // namespace swept
