@@ -133,7 +133,8 @@ inline bool boxes_apart(const Triangle& a, const Triangle& b, double limit_sq) {
 /// The squared distance of the triangles, or any value ≥ limit² when it is at least `limit`
 /// (then `out` is untouched). Returns true when the exact distance was computed.
 bool triangle_distance_sq(const Triangle& ta, const Triangle& tb, double limit,
-                          TriangleDistance& out, double& dist_sq) {
+                          TriangleDistance& out, double& dist_sq, const Vec3* axis = nullptr,
+                          double scale = 0.0) {
   const double limit_sq = limit * limit;
   if (limit < kInf) {
     // The gap along the line between the centroids bounds the distance from below; it
@@ -144,6 +145,13 @@ bool triangle_distance_sq(const Triangle& ta, const Triangle& tb, double limit,
     const double gap = lo_b - hi_a;
     if (gap > 0.0 && gap * gap >= limit_sq * n.squaredNorm()) return false;
     if (boxes_apart(ta, tb, limit_sq)) return false;
+    if (axis) {
+      // The gap along the caller's axis (triangle_distance_below's second overload).
+      const Vec3& u = *axis;
+      const double lo = std::min({u.dot(tb.p), u.dot(tb.q), u.dot(tb.r)});
+      const double hi = std::max({u.dot(ta.p), u.dot(ta.q), u.dot(ta.r)});
+      if (lo - hi - kTouch * scale >= limit) return false;
+    }
   }
   Prepared a, b;
   prepare(ta, a);
@@ -316,6 +324,12 @@ bool triangle_distance_below(const Triangle& a, const Triangle& b, double limit,
                              TriangleDistance& out) {
   double d2 = 0.0;
   return triangle_distance_sq(a, b, limit, out, d2);
+}
+
+bool triangle_distance_below(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out,
+                             const Vec3& axis, double scale) {
+  double d2 = 0.0;
+  return triangle_distance_sq(a, b, limit, out, d2, &axis, scale);
 }
 
 double touch_tolerance(const Triangle& a, const Triangle& b) {

@@ -171,6 +171,55 @@ TEST(TriangleDistance, CheapRejectionsAreRightNearTheirLimit) {
   EXPECT_GT(rejected, 20000);
 }
 
+// The gap along a caller's axis (triangle_distance_below with an axis and a scale) rejects no
+// pair the plain call accepts, and returns what it accepts to the bit. Triangles far from the
+// origin, apart by 1e-9 to 1 along a random direction, the axis that direction (where the gap
+// is the distance itself when the closest features are a vertex and a face) or tilted from it;
+// limits from well below the distance to just within the allowance above it. It fails with the
+// allowance dropped or its sign reversed (tried).
+TEST(TriangleDistance, GapAlongAnAxisRejectsOnlyWhatTheFullEvaluationWould) {
+  Rng rng(9);
+  int accepted = 0, rejected = 0;
+  for (int it = 0; it < 20000; ++it) {
+    const Mat3 r = rng.rotation();
+    const Vec3 off = rng.vec(-1e4, 1e4);
+    const double gap = std::pow(10.0, rng.uniform(-9, 0));
+    auto on_plane = [&](double h, double spread) {
+      Vec3 p[3];
+      for (Vec3& v : p) v = off + r * Vec3(rng.uniform(-spread, spread), rng.uniform(-spread, spread), h);
+      return Triangle{p[0], p[1], p[2]};
+    };
+    Triangle a = on_plane(0.0, 1.0), b = on_plane(gap, it % 2 ? 1.0 : 0.1);
+    if (it % 3 == 2) b.q += r * Vec3(0, 0, rng.uniform(0, 1e-3));  // not parallel
+    const TriangleDistance exact = triangle_distance(a, b);
+    const double d = exact.distance;
+    if (!(d > 0.0)) continue;
+    Vec3 axis = r.col(2);
+    if (it % 4 == 3) axis = (axis + rng.vec(-1e-3, 1e-3)).normalized();
+    double scale = 0.0;
+    for (int k = 0; k < 3; ++k) scale = std::max({scale, a[k].norm(), b[k].norm()});
+    const double allowance = 1e-12 * scale;
+    for (const double limit : {d * 0.5, d - 2 * allowance, d * (1 - 1e-12), d, std::nextafter(d, 1e300),
+                               d + 0.5 * allowance, d * (1 + 1e-9)}) {
+      if (limit < 0.0) continue;  // a search's limit is an answer so far: never negative
+      TriangleDistance plain, with_axis;
+      const bool plain_below = triangle_distance_below(a, b, limit, plain);
+      const bool axis_below = triangle_distance_below(a, b, limit, with_axis, axis, scale);
+      EXPECT_EQ(axis_below, plain_below) << it << " gap " << gap << " limit − d " << limit - d;
+      if (axis_below && plain_below) {
+        ++accepted;
+        EXPECT_EQ(with_axis.distance, plain.distance) << it;
+        EXPECT_EQ(with_axis.point_a, plain.point_a) << it;
+        EXPECT_EQ(with_axis.point_b, plain.point_b) << it;
+      } else {
+        ++rejected;
+      }
+    }
+  }
+  EXPECT_GT(accepted, 20000);
+  EXPECT_GT(rejected, 20000);
+}
+
 TEST(TrianglesIntersect, TouchingCountsAsIntersectingEvenFarFromTheOrigin) {
   for (const Vec3& o : {Vec3(0, 0, 0), Vec3(1e6, 1e6, -1e6)}) {
     // Coplanar overlap.
