@@ -135,6 +135,7 @@ inline bool boxes_apart(const Triangle& a, const Triangle& b, double limit_sq) {
 bool triangle_distance_sq(const Triangle& ta, const Triangle& tb, double limit,
                           TriangleDistance& out, double& dist_sq, const Vec3* axis = nullptr,
                           double scale = 0.0) {
+  if (!(limit > 0.0)) return false;  // no distance is below zero (nor below a NaN limit)
   const double limit_sq = limit * limit;
   if (limit < kInf) {
     if (axis) {

@@ -220,6 +220,24 @@ TEST(TriangleDistance, GapAlongAnAxisRejectsOnlyWhatTheFullEvaluationWould) {
   EXPECT_GT(rejected, 20000);
 }
 
+// No distance is below a limit of zero or less: the squares the test compares must not turn −0.5
+// into 0.25 (a pair at 0.1 was once accepted there), nor crossing triangles count as below 0, nor
+// a NaN limit give an answer.
+TEST(TriangleDistance, NothingIsBelowANegativeZeroOrNaNLimit) {
+  const Triangle a{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  const Triangle b{Vec3(0, 0, 0.1), Vec3(1, 0, 0.1), Vec3(0, 1, 0.1)};
+  const Triangle crossing{Vec3(0.2, 0.2, -1), Vec3(0.2, 0.2, 1), Vec3(0.3, 0.2, 1)};
+  for (const Triangle& t : {b, crossing})
+    for (const double limit : {-0.5, -1e-300, -0.0, 0.0, std::nan("")}) {
+      TriangleDistance d;
+      EXPECT_FALSE(triangle_distance_below(a, t, limit, d)) << limit;
+      EXPECT_FALSE(triangle_distance_below(a, t, limit, d, Vec3(0, 0, 1), 1.0)) << limit;
+    }
+  TriangleDistance d;
+  EXPECT_TRUE(triangle_distance_below(a, b, 0.5, d));
+  EXPECT_DOUBLE_EQ(d.distance, 0.1);
+}
+
 TEST(TrianglesIntersect, TouchingCountsAsIntersectingEvenFarFromTheOrigin) {
   for (const Vec3& o : {Vec3(0, 0, 0), Vec3(1e6, 1e6, -1e6)}) {
     // Coplanar overlap.
