@@ -90,11 +90,9 @@ struct DistanceSearch {
     // Every coordinate the triangle tests see (A's triangles, B's placed in A's frame) is at
     // most `scale` in magnitude: the roots' centers plus their reach.
     auto reach = [](const Rss& r) { return r.half_length[0] + r.half_length[1] + r.radius; };
-    if (!a.empty() && !b.empty()) {
-      const double bound = std::max(a.root.center.norm() + reach(a.root),
-                                    (rel.rotation * b.root.center + rel.translation).norm() + reach(b.root));
-      scale = bound;
-    }
+    if (!a.empty() && !b.empty())
+      scale = std::max(a.root.center.norm() + reach(a.root),
+                       (rel.rotation * b.root.center + rel.translation).norm() + reach(b.root));
   }
 
   double best = kInf;

@@ -107,7 +107,7 @@ struct Node {
   bool is_leaf() const { return count > 0; }
   /// The RSS's surface area: a traversal splits the node of a pair with the larger one. (Its
   /// expected number of overlapping node pairs grows with it; on the shared CAD, robot and motor
-  /// pairs it visits 6–30 % fewer node pairs than the half-lengths plus radius did.)
+  /// pairs it visits 5–27 % fewer node pairs than the half-lengths plus radius did.)
   float area() const {
     constexpr float k4pi = 12.566371f;
     return 8.0f * half_length[0] * half_length[1] + k4pi * radius * (half_length[0] + half_length[1] + radius);
