@@ -86,14 +86,7 @@ struct DistanceSearch {
                  double abs_err_, double enough_, const TrianglePairs* exclude_ = nullptr,
                  const std::function<bool(std::uint32_t, std::uint32_t)>* exclude_if_ = nullptr)
       : a(a_), b(b_), rel(rel_), rel_err(rel_err_), abs_err(abs_err_), enough(enough_), exclude(exclude_),
-        exclude_if(exclude_if_) {
-    // Every coordinate the triangle tests see (A's triangles, B's placed in A's frame) is at
-    // most `scale` in magnitude: the roots' centers plus their reach.
-    auto reach = [](const Rss& r) { return r.half_length[0] + r.half_length[1] + r.radius; };
-    if (!a.empty() && !b.empty())
-      scale = std::max(a.root.center.norm() + reach(a.root),
-                       (rel.rotation * b.root.center + rel.translation).norm() + reach(b.root));
-  }
+        exclude_if(exclude_if_) {}
 
   double best = kInf;
   bool have_witness = false;
@@ -138,7 +131,7 @@ struct DistanceSearch {
   /// docs/fitters.md "The gap along the answer's direction").
   bool have_axis = false;
   Vec3 axis = Vec3::Zero();
-  double scale = 0.0;  ///< bounds every coordinate a triangle test sees (A's frame)
+  double scale = 0.0;  ///< bounds every coordinate a triangle test sees (A's frame), set by run()
   /// True when a pair with this lower bound is dropped.
   bool prune(double bound) {
     if (bound >= best_level) return true;
@@ -211,6 +204,7 @@ struct DistanceSearch {
     if (a.empty() || b.empty()) return;
     remember_a(0, a.root);  // the roots, decoded when the trees were built
     remember_b(0, detail::place(b.root, rel));
+    scale = detail::coordinate_bound(rss_a, placed_b);
     const double root = bound(rss_a, placed_b);
     if (prune(root)) return;
     // The waiting pairs: a heap while best first, then a stack (its back on top). The buffer is

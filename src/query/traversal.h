@@ -175,6 +175,16 @@ inline RectanglePair node_pair(const Rss& na, const Rss& nb, const Relative& rel
                             -std::numeric_limits<double>::infinity(), slack) > limit;
 }
 
+/// A bound on |coordinate| of every vertex of A and of B placed in A's frame, from the two
+/// roots (A's in its model frame, B's placed); 1e-12 of it bounds every `touch_tolerance` the
+/// triangle tests will use.
+inline double coordinate_bound(const Rss& root_a, const PlacedRss& root_b) {
+  auto bound = [](const Rss& v, const Vec3& c) {
+    return c.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
+  };
+  return std::max(bound(root_a, root_a.center), bound(root_b.rss, root_b.center));
+}
+
 /// The roots of a query's two trees, each decoded once: A's in its model frame, B's placed in
 /// A's frame.
 struct Roots {
@@ -182,14 +192,7 @@ struct Roots {
   PlacedRss b;
   Roots(const Bvh& tree_a, const Bvh& tree_b, const Relative& rel) : a(tree_a.root), b(place(tree_b.root, rel)) {}
 
-  /// A bound on |coordinate| of every vertex of A and of B placed in A's frame; 1e-12 of it
-  /// bounds every `touch_tolerance` the triangle tests will use.
-  double coordinate_bound() const {
-    auto bound = [](const Rss& v, const Vec3& c) {
-      return c.cwiseAbs().maxCoeff() + v.half_length[0] + v.half_length[1] + v.radius;
-    };
-    return std::max(bound(a, a.center), bound(b.rss, b.center));
-  }
+  double coordinate_bound() const { return detail::coordinate_bound(a, b); }
 };
 
 /// True when node a (rather than node b) should be split: the one of larger surface area

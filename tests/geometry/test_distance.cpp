@@ -197,7 +197,7 @@ TEST(TriangleDistance, GapAlongAnAxisRejectsOnlyWhatTheFullEvaluationWould) {
     Vec3 axis = r.col(2);
     if (it % 4 == 3) axis = (axis + rng.vec(-1e-3, 1e-3)).normalized();
     double scale = 0.0;
-    for (int k = 0; k < 3; ++k) scale = std::max({scale, a[k].norm(), b[k].norm()});
+    for (int k = 0; k < 3; ++k) scale = std::max({scale, a[k].cwiseAbs().maxCoeff(), b[k].cwiseAbs().maxCoeff()});
     const double allowance = 1e-12 * scale;
     for (const double limit : {d * 0.5, d - 2 * allowance, d * (1 - 1e-12), d, std::nextafter(d, 1e300),
                                d + 0.5 * allowance, d * (1 + 1e-9)}) {

@@ -61,10 +61,11 @@ bool triangle_distance_below(const Triangle& a, const Triangle& b, double limit,
 /// The same, with one more cheap lower bound tried before the full evaluation: the gap between
 /// the triangles' projections on `axis`, a unit vector from A towards B (a search passes the
 /// direction of its closest pair so far: far apart, the pairs it must still test lie around
-/// that pair, and their gap along it is close to their distance). `scale` bounds the magnitude
-/// of every vertex of both triangles; the gap is trusted only beyond 1e-12 × scale, far above
-/// the rounding of the projections and of the full evaluation, so this rejects no pair that
-/// the plain call would accept, and what it accepts it returns to the bit as the plain call.
+/// that pair, and their gap along it is close to their distance). `scale` bounds the absolute
+/// value of every coordinate of both triangles; the gap is trusted only beyond 1e-12 × scale
+/// (`touch_tolerance`'s allowance), far above the rounding of the projections and of the full
+/// evaluation, so this rejects no pair that the plain call would accept, and what it accepts it
+/// returns to the bit as the plain call.
 bool triangle_distance_below(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out,
                              const Vec3& axis, double scale);
 
