@@ -7,6 +7,7 @@
 #include "swept/query/motion.h"
 #include "swept/query/query.h"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -16,6 +17,23 @@
 namespace swept::detail {
 
 using Clock = std::chrono::steady_clock;
+
+/// Triangle pairs (positions in the obstacles' and the body's trees, as DistanceResult::hint)
+/// that blocked, or were closest at, the poses a search step tried last, most recent first: a
+/// pose shortened from a blocked one, or reached from a node near a wall, is most often blocked
+/// by one of them (on the house, half of the tree's blocked steps).
+struct Suspects {
+  static constexpr std::size_t kSize = 4;
+  std::array<DistanceHint, kSize> pairs{};
+  /// `pair` first (moved up if it is there already); the oldest drops out.
+  void add(DistanceHint pair) {
+    if (!pair.valid()) return;
+    std::size_t k = 0;
+    while (k + 1 < kSize && !(pairs[k].a == pair.a && pairs[k].b == pair.b)) ++k;
+    for (; k > 0; --k) pairs[k] = pairs[k - 1];
+    pairs[0] = pair;
+  }
+};
 
 // Distance bounds and motion certificates against the obstacles, with query counters. In
 // `relaxed` mode (the escape from a start in contact) the triangle pairs that were closer than
@@ -38,7 +56,12 @@ class Checker {
   double clearance(const Pose& pose, double enough, bool relaxed = false) const;
   /// The same query with its result: when exact (and above the margin), its witness points
   /// are the closest pair.
-  DistanceResult measure(const Pose& pose, double enough) const { return query(pose, enough, false); }
+  /// With `suspects` (the pairs that blocked, or were closest at, the poses a search step tried
+  /// before) while set_decide_blocked is on: each is tried first, and one closer than the margin
+  /// decides the pose blocked in a triangle test (counted as the query it replaces); otherwise the
+  /// query runs as without them, so a free pose's result never depends on them. The query's
+  /// witness joins the suspects.
+  DistanceResult measure(const Pose& pose, double enough, Suspects* suspects = nullptr) const;
   /// Is the distance at `pose` above the margin? The cheapest query: it stops as soon as every
   /// pair left is proved farther than the margin (nothing else is asked of it).
   bool free(const Pose& pose) const;

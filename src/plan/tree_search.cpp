@@ -95,6 +95,7 @@ TreeNode TreeSearch::make_node(const Pose& pose, double distance, std::int32_t p
 
 TreeNode TreeSearch::make_node(const Pose& pose, const DistanceResult& d) const {
   TreeNode node = make_node(pose, d.distance, -1);
+  node.hint = d.hint;
   if (d.exact) {
     node.near_known = true;
     node.near_obstacle = d.point_a;
@@ -175,7 +176,8 @@ std::int32_t TreeSearch::nearest(const std::vector<TreeNode>& tree, const Pose& 
   return best;
 }
 
-std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose& target, bool& reached) const {
+std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose& target, bool& reached,
+                                                Suspects& suspects) const {
   reached = false;
   const Checker& check = context_.check;
   const double margin = check.margin();
@@ -187,11 +189,14 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
   }
   const double bubble = 0.9 * (from.distance - margin);  // certified without a query
   double s = std::min(length, std::max(step_, bubble));
+  // The pairs found closest or blocking at the node and at the poses this attempt tried
+  // before are tried first.
+  suspects.add(from.hint);
   for (int attempt = 0; attempt < 6 && s > 0.0; ++attempt) {
     const bool whole = s >= length;
     const Pose q = whole ? target : motion.at(s / length);
     if (inside(q)) {
-      const DistanceResult mq = check.measure(q, margin + kNodeReach * step_);
+      const DistanceResult mq = check.measure(q, margin + kNodeReach * step_, &suspects);
       const double dq = mq.distance;
       if (dq > margin && s > bubble) {
         // Past the free ball: the edge is certified later, if a path uses it. Its midpoint is
@@ -228,8 +233,8 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
 }
 
 bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& target, std::vector<TreeNode>& chain,
-                        bool& reached, std::size_t& edges) const {
-  std::optional<TreeNode> next = step_toward(from, target, reached);
+                        bool& reached, std::size_t& edges, Suspects& suspects) const {
+  std::optional<TreeNode> next = step_toward(from, target, reached, suspects);
   if (next) {
     edges += next->certified;
     next->parent = parent;
@@ -241,7 +246,7 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
   const std::size_t before = chain.size();
   TreeNode at = from;
   for (int k = 0; k < kSlides && !context_.out_of_time(); ++k) {
-    std::optional<TreeNode> slid = slide(at, target);
+    std::optional<TreeNode> slid = slide(at, target, suspects);
     if (!slid) break;
     edges += slid->certified;
     slid->parent = parent;
@@ -249,7 +254,7 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
     chain.push_back(*slid);
     at = *slid;
     // Free again toward the target?
-    if (std::optional<TreeNode> direct = step_toward(at, target, reached)) {
+    if (std::optional<TreeNode> direct = step_toward(at, target, reached, suspects)) {
       edges += direct->certified;
       direct->parent = parent;
       chain.push_back(*direct);
@@ -260,7 +265,7 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
   return chain.size() > before;
 }
 
-std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& target) const {
+std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& target, Suspects& suspects) const {
   const Checker& check = context_.check;
   const double margin = check.margin();
   // The closest points: the node's own query's when it was exact, else a query exact up to a step.
@@ -287,13 +292,14 @@ std::optional<TreeNode> TreeSearch::slide(const TreeNode& from, const Pose& targ
   double length = u.head<3>().norm() + u.tail<3>().norm();
   if (!(length > 0.0)) return std::nullopt;
   double s = std::min(length, std::max(0.25 * step_, 0.9 * (from.distance - margin)));
+  suspects.add(from.hint);  // as in step_toward
   for (int attempt = 0; attempt < 4 && s >= min_step_; ++attempt, s *= 0.5) {
     const double f = s / length;
     Vec3 move = f * u.head<3>() + 0.1 * s * n;  // and a little away from the obstacle
     const Mat3 rotation = exp_rotation(f * u.tail<3>() / radius) * from.pose.rotation;
     const Pose q = context_.pose_with_reference_at(rotation, from.point + move);
     if (!inside(q)) continue;
-    const DistanceResult mq = check.measure(q, margin + kNodeReach * step_);
+    const DistanceResult mq = check.measure(q, margin + kNodeReach * step_, &suspects);
     const double dq = mq.distance;
     if (dq <= margin) continue;
     if (s > 0.9 * (from.distance - margin)) {  // past the free ball: certified lazily
@@ -319,18 +325,19 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint6
   bool reached = false;
   // Every fourth sample moves along one axis or turns in place (`lattice_move`).
   const Pose aim = index % 4 == 3 ? lattice_move(mine[from], target, index / 4 % 2 == 1) : target;
-  if (!extend(mine[from], from, aim, out.grown, reached, out.edges)) return out;
-  reach_for(grow, out, kConnectSteps);
+  Suspects suspects;  // this attempt's
+  if (!extend(mine[from], from, aim, out.grown, reached, out.edges, suspects)) return out;
+  reach_for(grow, out, kConnectSteps, suspects);
   return out;
 }
 
 // Steps from `at` (index `parent`, encoded as in Attempt) toward `leg` along its line (no
 // slides), appending the nodes to `chain`; true when the leg's end is reached.
 bool TreeSearch::leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain,
-                     std::size_t& edges) const {
+                     std::size_t& edges, Suspects& suspects) const {
   for (int k = 0; k < kConnectSteps && !context_.out_of_time(); ++k) {
     bool reached = false;
-    std::optional<TreeNode> next = step_toward(at, leg, reached);
+    std::optional<TreeNode> next = step_toward(at, leg, reached, suspects);
     if (!next) return reached;
     edges += next->certified;
     next->parent = parent;
@@ -347,7 +354,8 @@ TreeSearch::Turn TreeSearch::turn(int grow, int orientation) const {
   const TreeNode& root = trees_[grow].front();
   const Pose turned = context_.pose_with_reference_at(lattice_rotation(static_cast<std::uint64_t>(orientation)) * root.pose.rotation, root.point);
   out.rotation = turned.rotation;
-  out.done = leg(root, 0, turned, out.nodes, out.edges);
+  Suspects suspects;
+  out.done = leg(root, 0, turned, out.nodes, out.edges, suspects);
   return out;
 }
 
@@ -355,6 +363,7 @@ TreeSearch::Attempt TreeSearch::seed_attempt(int grow, const Turn& turn, int axi
   // From the root: the turn in place to a lattice orientation of the root's, then a pull along
   // a world axis toward the bounds, step after step (no slides: the move stays on its line).
   Attempt out;
+  Suspects suspects;  // this seed's
   out.grown = turn.nodes;
   out.edges = turn.edges;
   if (turn.done) {  // else the turn stopped short: what grew stays
@@ -366,16 +375,16 @@ TreeSearch::Attempt TreeSearch::seed_attempt(int grow, const Turn& turn, int axi
     const double room = u[axis / 2] > 0 ? bounds.max[axis / 2] - root.point[axis / 2] : root.point[axis / 2] - bounds.min[axis / 2];
     const Pose pulled = context_.pose_with_reference_at(turn.rotation, root.point + room * u);
     const std::int32_t parent = out.grown.empty() ? 0 : -2 - static_cast<std::int32_t>(out.grown.size() - 1);
-    leg(at, parent, pulled, out.grown, out.edges);
+    leg(at, parent, pulled, out.grown, out.edges, suspects);
   }
   // The other tree does not reach for a seed: the seeds of both trees lie on the same few lines,
   // and the samples' reaching connects them (reaching for every seed cost the house and the
   // cubicles 2–3 times the search time).
-  if (!out.grown.empty()) reach_for(grow, out, 0);
+  if (!out.grown.empty()) reach_for(grow, out, 0, suspects);
   return out;
 }
 
-void TreeSearch::reach_for(int grow, Attempt& out, int max_steps) const {
+void TreeSearch::reach_for(int grow, Attempt& out, int max_steps, Suspects& suspects) const {
   bool reached = false;
   const TreeNode& grown = out.grown.back();
   if (region_ && grow == 0) {
@@ -389,7 +398,7 @@ void TreeSearch::reach_for(int grow, Attempt& out, int max_steps) const {
   TreeNode at = other[parent];
   for (int k = 0; k < max_steps && !context_.out_of_time(); ++k) {
     const std::size_t before = out.chain.size();
-    const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges);
+    const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges, suspects);
     if (reached) {
       out.connected = true;
       if (out.chain.empty()) out.meet = parent;  // the other tree's node is at the new node already

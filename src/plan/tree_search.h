@@ -52,6 +52,9 @@ struct TreeNode {
   bool near_known = false;
   Vec3 near_obstacle = Vec3::Zero();
   Vec3 near_body = Vec3::Zero();
+  /// The witness pair of the node's own query (DistanceResult::hint): the steps from the node
+  /// try it first.
+  DistanceHint hint{};
 };
 
 /// How the tree phase ended without a path.
@@ -96,15 +99,15 @@ class TreeSearch {
   TreeNode make_node(const Pose& pose, const DistanceResult& d) const;
   /// One step from `from` toward `target`: the new node (parent unset), or nullopt when even the
   /// shortest step is blocked. `reached` is set when the node is `target` itself.
-  std::optional<TreeNode> step_toward(const TreeNode& from, const Pose& target, bool& reached) const;
+  std::optional<TreeNode> step_toward(const TreeNode& from, const Pose& target, bool& reached, Suspects& suspects) const;
   /// Extends from `from` (index `parent`) toward `target`: one step, or after a blocked step
   /// slides along the obstacles (retraction: the motion's component into the nearest obstacle
   /// taken out). Appends the new nodes to `chain` (parents encoded as in Attempt); false when
   /// none. `reached`: the target itself was reached (or `from` is at it).
   bool extend(const TreeNode& from, std::int32_t parent, const Pose& target, std::vector<TreeNode>& chain,
-              bool& reached, std::size_t& edges) const;
+              bool& reached, std::size_t& edges, Suspects& suspects) const;
   /// One slide from `from` toward `target` along the nearest obstacle, certified.
-  std::optional<TreeNode> slide(const TreeNode& from, const Pose& target) const;
+  std::optional<TreeNode> slide(const TreeNode& from, const Pose& target, Suspects& suspects) const;
   /// Grows tree `grow` toward sample `index` (`target`), and the other tree toward what grew.
   Attempt attempt(int grow, const Pose& target, std::uint64_t index) const;
   /// The turn in place of tree `grow`'s root to lattice orientation `orientation`
@@ -122,9 +125,10 @@ class TreeSearch {
   Attempt seed_attempt(int grow, const Turn& turn, int axis) const;
   /// Steps from `at` (index `parent`, encoded as in Attempt) toward `leg` along its line, no
   /// slides, appending the nodes to `chain`; true when the leg's end is reached.
-  bool leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain, std::size_t& edges) const;
+  bool leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain, std::size_t& edges,
+           Suspects& suspects) const;
   /// The other tree reaches for the last node `out` grew, step after step (at most `max_steps`).
-  void reach_for(int grow, Attempt& out, int max_steps) const;
+  void reach_for(int grow, Attempt& out, int max_steps, Suspects& suspects) const;
   /// Seeds per tree with a root of its own: 24 orientations × 6 axes.
   static constexpr std::uint64_t kSeeds = 144;
   /// Where a lattice move from `from` toward `target` aims: the same reference point turned to

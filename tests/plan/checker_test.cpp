@@ -5,6 +5,7 @@
 #include "plan/plan_support.h"
 
 #include <cmath>
+#include <vector>
 
 namespace swept {
 namespace {
@@ -89,6 +90,82 @@ TEST(Checker, AMotionThatTurnsKeepsTheCertificate) {
   EXPECT_TRUE(c.clear());
   EXPECT_EQ(check.sweeps(), 0u);
   EXPECT_GT(check.distance_queries(), static_cast<std::uint64_t>(detail::Checker::kSweepAfter));
+}
+
+TEST(Checker, SuspectsDecideOnlyWhatTheQueryWould) {
+  // A walk of short random steps through the L-tunnel's walls, as a search tree's steps go: each
+  // pose measured twice, plainly and with the pairs the walk's earlier poses found closest or
+  // blocking. Free poses must get the same bits; blocked ones must be blocked for both, and a
+  // pair a suspect decides blocked is checked with the oracle's own triangle distance. The
+  // query count is the same either way (a suspect's decision counts as the query it replaces).
+  const GeneratedProblem g = scenes::l_tunnel();
+  const PlanScene scene = scene_of(g);
+  const double margin = 0.05;
+  detail::Checker plain(scene, margin), suspected(scene, margin);
+  plain.set_decide_blocked(true);
+  suspected.set_decide_blocked(true);
+  const std::vector<oracle::Tri> obstacles = oracle_triangles(g.obstacles);
+  Rng rng(2026);
+  detail::Suspects suspects;
+  Pose pose = g.problem.start;
+  const Aabb box = *g.problem.bounds;
+  int blocked = 0, decided_by_suspect = 0, free = 0;
+  for (int i = 0; i < 3000; ++i) {
+    if (i % 50 == 0) pose = {rng.rotation(), rng.vec(0, 1).cwiseProduct(box.max - box.min) + box.min};
+    else pose = {Eigen::AngleAxisd(rng.uniform(-0.2, 0.2), rng.vec(-1, 1).normalized()).toRotationMatrix() * pose.rotation,
+                 pose.translation + rng.vec(-0.3, 0.3)};
+    const double enough = margin + 0.5;
+    const DistanceResult p = plain.measure(pose, enough);
+    const DistanceResult s = suspected.measure(pose, enough, &suspects);
+    ASSERT_EQ(p.distance <= margin, s.distance <= margin) << "pose " << i;
+    if (p.distance > margin) {
+      ++free;
+      EXPECT_EQ(p.distance, s.distance) << "pose " << i;
+      EXPECT_EQ(p.exact, s.exact) << "pose " << i;
+      EXPECT_EQ(p.triangle_a, s.triangle_a) << "pose " << i;
+      EXPECT_EQ(p.triangle_b, s.triangle_b) << "pose " << i;
+      continue;
+    }
+    ++blocked;
+    if (s.stats.bv_tests == 0) {
+      ++decided_by_suspect;
+      EXPECT_EQ(s.stats.triangle_tests, 1u);
+      const Triangle& t = g.body.triangles[s.triangle_b];
+      const oracle::Tri body{{pose.apply(t.p), pose.apply(t.q), pose.apply(t.r)}};
+      EXPECT_LE(oracle::triangle_distance(obstacles[s.triangle_a], body), margin + 1e-12) << "pose " << i;
+      EXPECT_LE(s.distance, margin);
+    }
+  }
+  EXPECT_EQ(plain.distance_queries(), suspected.distance_queries());
+  // The walk crosses walls often, and the suspects decide most of its blocked poses.
+  EXPECT_GT(free, 300);
+  EXPECT_GT(blocked, 300);
+  EXPECT_GT(decided_by_suspect, blocked / 2);
+  // Without set_decide_blocked (exact distances asked for) the suspects are not used.
+  const detail::Checker exact(scene, margin);
+  detail::Suspects held = suspects;
+  for (int i = 0; i < 200; ++i) {
+    const Pose q{rng.rotation(), rng.vec(0, 1).cwiseProduct(box.max - box.min) + box.min};
+    const DistanceResult a = exact.measure(q, 1e300), b = exact.measure(q, 1e300, &held);
+    EXPECT_EQ(a.distance, b.distance) << "pose " << i;
+    EXPECT_EQ(a.triangle_a, b.triangle_a) << "pose " << i;
+    EXPECT_EQ(a.triangle_b, b.triangle_b) << "pose " << i;
+  }
+}
+
+TEST(Checker, SuspectsKeepTheMostRecentPairsFirst) {
+  detail::Suspects s;
+  s.add({});  // not a pair: ignored
+  EXPECT_FALSE(s.pairs[0].valid());
+  for (std::uint32_t k = 1; k <= 5; ++k) s.add({k, 10 * k});
+  // 5, 4, 3, 2 (1 dropped out); adding 3 again moves it up without a copy.
+  EXPECT_EQ(s.pairs[0].a, 5u);
+  EXPECT_EQ(s.pairs[3].a, 2u);
+  s.add({3, 30});
+  EXPECT_EQ(s.pairs[0].a, 3u);
+  EXPECT_EQ(s.pairs[1].a, 5u);
+  EXPECT_EQ(s.pairs[2].a, 4u);
+  EXPECT_EQ(s.pairs[3].a, 2u);
 }
 
 }  // namespace
