@@ -4,6 +4,7 @@
 
 #include "swept/geometry/distance.h"
 
+#include <array>
 #include <cmath>
 #include <atomic>
 #include <cstdio>
@@ -74,12 +75,13 @@ double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) 
 }
 
 Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
-                             int max_queries) const {
-  // Coherence: each query of the certificate starts from the previous one's closest pair.
-  DistanceHint hint;
-  auto bound = [&](const Pose& pose, double enough) {
-    const DistanceResult d = query(pose, enough, relaxed, hint);
-    if (d.hint.valid()) hint = d.hint;
+                             int max_queries, bool paired) const {
+  // Coherence: each query of the certificate starts from the previous one's closest pair on
+  // its lane.
+  std::array<DistanceHint, 2> hints;
+  auto bound = [&](const Pose& pose, double enough, int lane) {
+    const DistanceResult d = query(pose, enough, relaxed, hints[lane]);
+    if (d.hint.valid()) hints[lane] = d.hint;
     return d.distance;
   };
   CertificateOptions options{.margin = margin_, .max_queries = max_queries, .deadline = deadline_,
@@ -106,7 +108,8 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
       return s->clear;
     };
   }
-  const Certificate c = certify_motion(m, bound, options);
+  const Certificate c = paired ? certify_motion_paired(m, bound, options)
+                               : certify_motion(m, [&](const Pose& pose, double enough) { return bound(pose, enough, 0); }, options);
   if (c.status == MotionStatus::refused_cap && max_queries == kMaxCertificateQueries) ++cap_refusals_;
   return c;
 }

@@ -90,8 +90,10 @@ class Checker {
   /// where it is blocked. Refusals for the query cap are counted (`cap_refusals`) when the cap
   /// is the default one; a lower `max_queries` is a caller's
   /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
+  /// `paired`: two midpoints at a time, in parallel (`certify_motion_paired`), for callers
+  /// whose own work is serial.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
-                      int max_queries = kMaxCertificateQueries) const;
+                      int max_queries = kMaxCertificateQueries, bool paired = false) const;
   /// Certified clear?
   bool clear(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const {
     return certify(a, da, b, db, relaxed).clear();

@@ -43,9 +43,10 @@ struct PlanContext {
   }
   /// Certifies the motion a → b (ends' bounds da, db; negative: unknown), counting it; with
   /// `max_queries`, a motion that needs more bisection queries is not clear (Checker::certify).
+  /// Two midpoints at a time (the phases that call it are serial).
   bool certify(const Pose& a, double da, const Pose& b, double db, int max_queries = kMaxCertificateQueries) {
     ++edges_checked;
-    return check.certify(a, da, b, db, false, max_queries).clear();
+    return check.certify(a, da, b, db, false, max_queries, /*paired=*/true).clear();
   }
 };
 

@@ -468,7 +468,7 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
     const std::vector<TreeNode>& tree = trees_[edges[k].tree];
     const TreeNode& child = tree[edges[k].node];
     const TreeNode& parent = tree[child.parent];
-    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance).status;
+    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance, false, kMaxCertificateQueries, /*paired=*/true).status;
   });
   bool all = true;
   for (const Edge& e : edges) {

@@ -8,7 +8,10 @@
 
 #include "swept/geometry/assert.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -51,8 +54,11 @@ Pose Motion::at(double t) const {
   return t <= 0.0 ? from : (t >= 1.0 ? to : interpolate(from, to, t, reference));
 }
 
-Certificate certify_motion(const Motion& motion, const DistanceBound& distance_at,
-                           const CertificateOptions& options) {
+namespace {
+
+// The certificate (motion.h), one piece or two pieces at a time (`width`).
+Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, const CertificateOptions& options,
+                    int width) {
   Certificate out;
   SWEPT_ASSERT(motion.radius >= 0.0, "Motion::radius must be given (motion_radius of the body)");
   if (!(motion.radius >= 0.0)) {
@@ -65,11 +71,9 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
   // and the slerp turns at a constant rate. The relative allowance covers rounding in the
   // interpolated poses.
   const double total = motion.length() * (1.0 + 1e-9);
-  auto query = [&](double t, double enough) {
+  auto seen = [&](double d) {
     ++out.distance_queries;
-    const double d = distance_at(motion.at(t), enough);
     out.min_distance = std::min(out.min_distance, d);
-    return d;
   };
   auto blocked = [&](double t, double d) {
     out.status = MotionStatus::blocked;
@@ -79,8 +83,17 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
   };
   // Contact always blocks: with margin 0 a pose blocks at distance 0. The `enough` asked for
   // is always above the margin, so a bound returned at or below the margin is exact.
-  const double d0 = options.from_bound >= 0.0 ? options.from_bound : query(0.0, m + total);
-  const double d1 = options.to_bound >= 0.0 ? options.to_bound : query(1.0, m + total);
+  double d0 = options.from_bound, d1 = options.to_bound;
+  const bool ask0 = !(d0 >= 0.0), ask1 = !(d1 >= 0.0);
+  if (ask0 && ask1 && width == 2) {
+    tbb::parallel_invoke([&] { d0 = distance_at(motion.at(0.0), m + total, 0); },
+                         [&] { d1 = distance_at(motion.at(1.0), m + total, 1); });
+  } else {
+    if (ask0) d0 = distance_at(motion.at(0.0), m + total, 0);
+    if (ask1) d1 = distance_at(motion.at(1.0), m + total, 0);
+  }
+  if (ask0) seen(d0);
+  if (ask1) seen(d1);
   out.min_distance = std::min({out.min_distance, d0, d1});
   if (d0 <= m) return blocked(0.0, d0);
   if (d1 <= m) return blocked(1.0, d1);
@@ -88,44 +101,73 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
   struct Piece {
     double t0, d0, t1, d1;
   };
+  struct Ask {
+    Piece piece;
+    double tm, enough, dm;
+  };
   std::vector<Piece> stack{{0.0, d0, 1.0, d1}};  // depth first, earliest piece on top
+  std::array<Ask, 2> asks{};
   int bisections = 0;
   while (!stack.empty()) {
-    const Piece p = stack.back();
-    stack.pop_back();
-    const double length = total * (p.t1 - p.t0);
-    if (length < (p.d0 - m) + (p.d1 - m)) continue;  // certified free
-    // Too many pieces, or pieces too short to split, mean the motion grazes the margin:
-    // ask the exact second opinion if there is one, else refuse rather than loop.
-    const bool capped = ++bisections > options.max_queries || p.t1 - p.t0 < 1e-9;
-    if ((capped || bisections > options.decide_after) && options.decide && !out.decided) {
-      out.decided = true;
-      if (options.decide(out.min_distance)) {
-        out.status = MotionStatus::clear;
+    // The earliest `width` pieces not certified whole.
+    int n = 0;
+    while (n < width && !stack.empty()) {
+      const Piece p = stack.back();
+      stack.pop_back();
+      const double length = total * (p.t1 - p.t0);
+      if (length < (p.d0 - m) + (p.d1 - m)) continue;  // certified free
+      // Too many pieces, or pieces too short to split, mean the motion grazes the margin:
+      // ask the exact second opinion if there is one, else refuse rather than loop.
+      const bool capped = ++bisections > options.max_queries || p.t1 - p.t0 < 1e-9;
+      if ((capped || bisections > options.decide_after) && options.decide && !out.decided) {
+        out.decided = true;
+        if (options.decide(out.min_distance)) {
+          out.status = MotionStatus::clear;
+          return out;
+        }
+      }
+      if (capped) {
+        out.status = MotionStatus::refused_cap;
         return out;
       }
+      if ((bisections & 63) == 0 && options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+        out.status = MotionStatus::deadline;
+        return out;
+      }
+      // Both halves are certified free once dm − m > length/2 − (min(d0, d1) − m) (positive
+      // here, as the piece was not certified whole): the query need not be exact beyond that,
+      // and stops sooner than it would at m + length/2. The pieces, and so the queries, are the
+      // same.
+      const double short_end = std::min(p.d0, p.d1) - m;
+      const double need = 0.5 * length - std::max(0.0, short_end);
+      asks[n++] = {p, 0.5 * (p.t0 + p.t1), m + need * (1.0 + 1e-9) + 1e-300, 0.0};
     }
-    if (capped) {
-      out.status = MotionStatus::refused_cap;
-      return out;
+    if (n == 0) break;
+    auto ask = [&](int k) { asks[k].dm = distance_at(motion.at(asks[k].tm), asks[k].enough, k); };
+    if (n == 2) tbb::parallel_invoke([&] { ask(0); }, [&] { ask(1); });
+    else ask(0);
+    for (int k = 0; k < n; ++k) seen(asks[k].dm);
+    for (int k = 0; k < n; ++k)
+      if (asks[k].dm <= m) return blocked(asks[k].tm, asks[k].dm);
+    for (int k = n - 1; k >= 0; --k) {
+      const Ask& a = asks[k];
+      stack.push_back({a.tm, a.dm, a.piece.t1, a.piece.d1});
+      stack.push_back({a.piece.t0, a.piece.d0, a.tm, a.dm});
     }
-    if ((bisections & 63) == 0 && options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
-      out.status = MotionStatus::deadline;
-      return out;
-    }
-    const double tm = 0.5 * (p.t0 + p.t1);
-    // Both halves are certified free once dm − m > length/2 − (min(d0, d1) − m) (positive here,
-    // as the piece was not certified whole): the query need not be exact beyond that, and stops
-    // sooner than it would at m + length/2. The pieces, and so the queries, are the same.
-    const double short_end = std::min(p.d0, p.d1) - m;
-    const double need = 0.5 * length - std::max(0.0, short_end);
-    const double dm = query(tm, m + need * (1.0 + 1e-9) + 1e-300);
-    if (dm <= m) return blocked(tm, dm);
-    stack.push_back({tm, dm, p.t1, p.d1});
-    stack.push_back({p.t0, p.d0, tm, dm});
   }
   out.status = MotionStatus::clear;
   return out;
+}
+
+}  // namespace
+
+Certificate certify_motion(const Motion& motion, const DistanceBound& distance_at, const CertificateOptions& options) {
+  return certify(motion, [&](const Pose& pose, double enough, int) { return distance_at(pose, enough); }, options, 1);
+}
+
+Certificate certify_motion_paired(const Motion& motion, const LaneDistanceBound& distance_at,
+                                  const CertificateOptions& options) {
+  return certify(motion, distance_at, options, 2);
 }
 
 MotionResult motion_clearance(const Bvh& a, const Pose& pose_a, const Bvh& b, const Motion& motion,

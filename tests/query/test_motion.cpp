@@ -9,8 +9,11 @@
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -338,6 +341,76 @@ TEST(CertifyMotion, BisectsEndBoundsDeadlineAndRadius) {
   const Motion no_radius{Pose::identity(), Pose::from_axis_angle(Vec3::UnitZ(), 1.0, Vec3::Zero())};
   EXPECT_EQ(certify_motion(no_radius, wall(2.0), {}).status, MotionStatus::invalid_motion);
 #endif
+}
+
+// The paired certificate against the plain one, on hand-made distance functions (a point body
+// among walls): a free motion is cut into the same pieces (the same midpoints asked, the same
+// count), a blocked one is blocked where the distance is at most the margin, and one lane is
+// never asked twice at once.
+TEST(CertifyMotion, PairedCutsTheSamePiecesTwoAtATime) {
+  tbb::task_arena arena(2);
+  arena.execute([] {
+    const Motion along{Pose::from_translation({0, 0, 0}), Pose::from_translation({10, 0, 0}), Vec3::Zero(), 0.0};
+    // Walls x = w (each at distance |x − w|) and a plate y = −h under the path.
+    struct Scene {
+      std::vector<double> walls;
+      double plate;
+      double at(const Pose& pose) const {
+        double d = std::abs(pose.translation.y() + plate);
+        for (double w : walls) d = std::min(d, std::abs(pose.translation.x() - w));
+        return d;
+      }
+    };
+    const std::vector<Scene> scenes{{{}, 0.3}, {{-1.0, 11.5}, 0.05}, {{12.0}, 1e-3}, {{3.7}, 0.3}, {{0.2, 9.9}, 0.2},
+                                    {{6.25}, 0.01}};
+    int clear = 0, blocked = 0;  // (a wall crossed at margin 0 is refused: no midpoint lands on it)
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+      const Scene& scene = scenes[k];
+      for (double margin : {0.0, 0.005, 0.1}) {
+        std::vector<double> plain_ts;
+        const Certificate plain = certify_motion(
+            along,
+            [&](const Pose& pose, double) {
+              plain_ts.push_back(pose.translation.x());
+              return scene.at(pose);
+            },
+            {.margin = margin, .max_queries = 100000});
+        std::array<std::vector<double>, 2> lane_ts;
+        std::array<std::atomic<int>, 2> busy{};
+        std::atomic<int> overlaps{0};
+        const Certificate paired = certify_motion_paired(
+            along,
+            [&](const Pose& pose, double, int lane) {
+              if (busy[lane]++ != 0) ++overlaps;
+              lane_ts[lane].push_back(pose.translation.x());
+              const double d = scene.at(pose);
+              --busy[lane];
+              return d;
+            },
+            {.margin = margin, .max_queries = 100000});
+        SCOPED_TRACE(testing::Message() << "scene " << k << ", margin " << margin);
+        EXPECT_EQ(overlaps.load(), 0);
+        std::vector<double> paired_ts = lane_ts[0];
+        paired_ts.insert(paired_ts.end(), lane_ts[1].begin(), lane_ts[1].end());
+        EXPECT_EQ(paired.distance_queries, static_cast<int>(paired_ts.size()));
+        ASSERT_EQ(plain.status, paired.status);
+        if (plain.clear()) {
+          std::sort(plain_ts.begin(), plain_ts.end());
+          std::sort(paired_ts.begin(), paired_ts.end());
+          EXPECT_EQ(plain_ts, paired_ts);
+          EXPECT_EQ(plain.distance_queries, paired.distance_queries);
+          EXPECT_EQ(plain.min_distance, paired.min_distance);
+          ++clear;
+        } else if (paired.status == MotionStatus::blocked) {
+          ++blocked;
+          EXPECT_LE(paired.distance_at_block, margin);
+          EXPECT_EQ(scene.at(along.at(paired.t_blocked)), paired.distance_at_block);
+        }
+      }
+    }
+    EXPECT_GE(clear, 6);
+    EXPECT_GE(blocked, 4);
+  });
 }
 
 }  // namespace

@@ -58,6 +58,11 @@ inline constexpr int kSweepAfterQueries = 64;
 /// A lower bound on the distance at `pose`, exact when below `enough` (any value ≥ `enough`
 /// otherwise, like `DistanceRequest::enough`).
 using DistanceBound = std::function<double(const Pose& pose, double enough)>;
+/// The same for a certificate that asks two midpoints at once (`certify_motion_paired`): `lane`
+/// (0 or 1) says which of the two; calls on different lanes may run at the same time, calls on
+/// one lane never do, and the lanes are assigned by the certificate's own order, whatever the
+/// number of threads.
+using LaneDistanceBound = std::function<double(const Pose& pose, double enough, int lane)>;
 
 struct CertificateOptions {
   double margin = 0.0;  ///< required distance (≥ 0); a pose at distance ≤ margin blocks
@@ -107,6 +112,16 @@ TranslationBound as_translation(const Motion& motion);
 /// Never answers `clear` for a motion that comes within the margin.
 Certificate certify_motion(const Motion& motion, const DistanceBound& distance_at,
                            const CertificateOptions& options);
+/// The same certificate, two pieces at a time: the two earliest pieces that need a query have
+/// their midpoints asked at once, in parallel (lane 0 the earlier, lane 1 the later), and the
+/// earlier one's halves come next. A free motion is cut into the same pieces as by
+/// `certify_motion` when the distances returned are the same, so it takes the same queries in
+/// about half the time on two cores; a blocked one stops at the first blocked midpoint in this
+/// order (the earlier of the two when both block), which may be another one than
+/// `certify_motion` finds. For callers whose own work leaves a core idle (the planner's
+/// shortcuts, straight moves, grid edges, a joined path's lazy edges and the final check).
+Certificate certify_motion_paired(const Motion& motion, const LaneDistanceBound& distance_at,
+                                  const CertificateOptions& options);
 
 // ---- motion clearance against a tree --------------------------------------------------------
 struct MotionRequest {
