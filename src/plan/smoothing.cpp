@@ -1,6 +1,10 @@
 // Phase 3: shortcut smoothing (smoothing.h).
 #include "smoothing.h"
 
+#include <tbb/parallel_for.h>
+
+#include <limits>
+
 namespace swept::detail {
 namespace {
 
@@ -13,8 +17,15 @@ constexpr int kShortcutQueries = 256;
 }  // namespace
 
 void smooth(PlanContext& context, std::vector<Pose>& path, std::size_t fixed) {
+  // The distance at every waypoint a shortcut can start or end at, measured once, in parallel:
+  // each serves as a known end bound of every shortcut through it.
+  std::vector<double> distance(path.size(), -1.0);
+  tbb::parallel_for(fixed, path.size(), [&](std::size_t k) {
+    distance[k] = context.check.clearance(path[k], std::numeric_limits<double>::infinity());
+  });
   for (int round = 0; round < 2 && path.size() > fixed + 2; ++round) {
     std::vector<Pose> out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(fixed + 1));
+    std::vector<double> out_distance(distance.begin(), distance.begin() + static_cast<std::ptrdiff_t>(fixed + 1));
     std::size_t i = fixed;
     while (i + 1 < path.size()) {
       if (context.out_of_time() || context.over_budget()) return;
@@ -22,13 +33,15 @@ void smooth(PlanContext& context, std::vector<Pose>& path, std::size_t fixed) {
       while (lo < hi) {
         const std::size_t mid = (lo + hi + 1) / 2;
         if (context.over_budget()) return;  // the path as it was: every segment certified
-        if (context.certify(path[i], -1, path[mid], -1, kShortcutQueries)) lo = mid;
+        if (context.certify(path[i], distance[i], path[mid], distance[mid], kShortcutQueries)) lo = mid;
         else hi = mid - 1;
       }
       out.push_back(path[lo]);
+      out_distance.push_back(distance[lo]);
       i = lo;
     }
     path = std::move(out);
+    distance = std::move(out_distance);
   }
 }
 
