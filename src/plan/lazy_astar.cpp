@@ -3,6 +3,8 @@
 
 #include "swept/geometry/assert.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -83,13 +85,34 @@ std::optional<std::vector<GridKey>> LazyGridSearch::search_level(int level, std:
     // The node.
     NodeInfo* node = nullptr;
     if (e.key != kGoalKey) {
-      auto it = nodes_.find(e.key);
-      if (it == nodes_.end() || (it->second.free && !it->second.queried && it->second.distance <= margin + step)) {
-        // Unknown, or known only by a bound too weak to carry on: query it.
-        NodeInfo info;
-        info.free = context_.free_at(grid_.pose_of(e.key), 4.0 * step, &info.distance);
-        it = nodes_.insert_or_assign(e.key, info).first;
+      // Unknown, or known only by a bound too weak to carry on: query it.
+      auto unknown = [&](const GridKey& key) {
+        const auto it = nodes_.find(key);
+        return it == nodes_.end() || (it->second.free && !it->second.queried && it->second.distance <= margin + step);
+      };
+      if (unknown(e.key)) {
+        // The next entry's node, when it too is unknown, is queried at the same time on the other
+        // core (it would be when popped). The search is the same: a node's freedom and an
+        // edge's verdict do not depend on which bounds are known first, only the count of
+        // queries does (a node queried ahead gets no bound from its parent's free ball).
+        const Entry* ahead = open.empty() || !query_ahead_ ? nullptr : &open.top();
+        if (ahead && (ahead->key == kGoalKey || ahead->key == e.key || closed.count(ahead->key) || !unknown(ahead->key)))
+          ahead = nullptr;
+        auto query = [&](const GridKey& key) {
+          NodeInfo info;
+          info.free = context_.free_at(grid_.pose_of(key), 4.0 * step, &info.distance);
+          return info;
+        };
+        NodeInfo here, there;
+        if (ahead) {
+          tbb::parallel_invoke([&] { here = query(e.key); }, [&] { there = query(ahead->key); });
+          nodes_.insert_or_assign(ahead->key, there);
+        } else {
+          here = query(e.key);
+        }
+        nodes_.insert_or_assign(e.key, here);
       }
+      const auto it = nodes_.find(e.key);
       if (!it->second.free) continue;
       node = &it->second;
     }

@@ -66,6 +66,10 @@ class LazyGridSearch {
   double heuristic(const Pose& pose) const;
 
   int level_reached() const { return level_reached_; }
+  /// While on (the default), an expansion that queries its node also queries the next entry's
+  /// node when that one is unknown too, on the other core. Off only to test that it changes no
+  /// decision.
+  void set_query_ahead(bool on) { query_ahead_ = on; }
   std::size_t nodes_known() const { return nodes_.size(); }
 
  private:
@@ -78,6 +82,7 @@ class LazyGridSearch {
   absl::flat_hash_map<GridEdge, bool, GridEdgeHash> edges_;  ///< certified clear?
   int level_reached_ = 0;
   std::size_t expansions_ = 0;
+  bool query_ahead_ = true;
   double last_progress_s_ = -1.0;
 };
 

@@ -2,7 +2,10 @@
 #include "plan/lazy_astar.h"
 #include "plan/phase_support.h"
 
+#include <array>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 namespace swept {
 namespace {
@@ -41,6 +44,43 @@ TEST(LazyAStar, Heuristic) {
     EXPECT_NEAR(search.heuristic(Pose{}), 10 + std::sqrt(12.0), 1e-12);
     EXPECT_NEAR(search.heuristic(Pose::from_translation(Vec3(0, -4, 0))), 6 + std::sqrt(12.0), 1e-12);
   }
+}
+
+TEST(LazyAStar, QueryingAheadChangesNoDecision) {
+  // The same expansions, outcome and path with the next node queried ahead as without, on
+  // problems solved at several levels and on one whose budget runs out (the closed box).
+  std::vector<GeneratedProblem> problems{wall_between(), scenes::l_tunnel(), scenes::t_slot(), scenes::enclosed()};
+  int ahead_used = 0;
+  for (const GeneratedProblem& g : problems) {
+    SCOPED_TRACE(g.name);
+    std::array<std::optional<std::vector<Pose>>, 2> paths;
+    std::array<std::size_t, 2> expansions{};
+    std::array<std::uint64_t, 2> queries{};
+    std::array<detail::GridOutcome, 2> outcomes{};
+    for (int ahead = 0; ahead < 2; ++ahead) {
+      PhaseRig rig(g);
+      const Pose start = rig.problem().start;
+      const detail::Grid grid(rig.space, start, start, rig.problem().clearance, rig.context.scene_size());
+      detail::LazyGridSearch search(rig.context, grid, start, rig.start_distance(start));
+      search.set_query_ahead(ahead == 1);
+      const std::uint64_t before = rig.check.distance_queries();
+      paths[ahead] = search.run(outcomes[ahead], 3000);
+      expansions[ahead] = search.expansions();
+      queries[ahead] = rig.check.distance_queries() - before;
+    }
+    EXPECT_EQ(outcomes[0], outcomes[1]);
+    EXPECT_EQ(expansions[0], expansions[1]);
+    ASSERT_EQ(paths[0].has_value(), paths[1].has_value());
+    if (paths[0]) {
+      ASSERT_EQ(paths[0]->size(), paths[1]->size());
+      for (std::size_t k = 0; k < paths[0]->size(); ++k) {
+        EXPECT_EQ((*paths[0])[k].translation, (*paths[1])[k].translation);
+        EXPECT_EQ((*paths[0])[k].rotation, (*paths[1])[k].rotation);
+      }
+    }
+    ahead_used += queries[0] != queries[1];
+  }
+  EXPECT_GT(ahead_used, 0);  // the nodes ahead were queried somewhere
 }
 
 TEST(LazyAStar, GoesRoundTheWall) {
