@@ -6,8 +6,6 @@
 
 #include <array>
 #include <cmath>
-#include <atomic>
-#include <cstdio>
 #include <limits>
 
 namespace swept::detail {

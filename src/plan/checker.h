@@ -21,7 +21,7 @@ using Clock = std::chrono::steady_clock;
 /// Triangle pairs (positions in the obstacles' and the body's trees, as DistanceResult::hint)
 /// that blocked, or were closest at, the poses a search step tried last, most recent first: a
 /// pose shortened from a blocked one, or reached from a node near a wall, is most often blocked
-/// by one of them (on the house, half of the tree's blocked steps).
+/// by one of them (on the house, about 70 % of the trees' blocked steps).
 struct Suspects {
   static constexpr std::size_t kSize = 4;
   std::array<DistanceHint, kSize> pairs{};
