@@ -2,8 +2,6 @@
 // planner's phases and the final certification (checker.h).
 #include "checker.h"
 
-#include "swept/geometry/distance.h"
-
 #include <array>
 #include <cmath>
 #include <limits>
@@ -11,43 +9,17 @@
 namespace swept::detail {
 
 DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint, bool decide,
-                              bool apart) const {
+                              bool apart, std::span<const DistanceHint> suspects) const {
   ++distance_queries_;
   const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint,
                                 .stop_below = decide && decide_blocked_ ? margin_ : -std::numeric_limits<double>::infinity(),
-                                .apart = apart};
+                                .suspects = suspects, .apart = apart};
   return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
 }
 
 DistanceResult Checker::measure(const Pose& pose, double enough, Suspects* suspects) const {
   if (!suspects) return query(pose, enough, false);
-  const Bvh& obstacles = scene_.obstacle_tree;
-  const Bvh& body = scene_.body_tree;
-  if (decide_blocked_) {
-    const double limit = std::nextafter(margin_, std::numeric_limits<double>::infinity());
-    for (const DistanceHint& s : suspects->pairs) {
-      if (!s.valid() || s.a >= obstacles.triangles.size() || s.b >= body.triangles.size()) continue;
-      const Triangle t = body.triangles[s.b];
-      TriangleDistance d;
-      if (!triangle_distance_below(obstacles.triangles[s.a], {pose.apply(t.p), pose.apply(t.q), pose.apply(t.r)}, limit, d) ||
-          d.distance > margin_)
-        continue;
-      // Blocked, as the query would have decided (it too reports some pair closer than the margin).
-      ++distance_queries_;
-      DistanceResult out;
-      out.distance = d.distance;
-      out.exact = false;
-      out.point_a = d.point_a;
-      out.point_b = d.point_b;
-      out.triangle_a = obstacles.triangle_ids[s.a];
-      out.triangle_b = body.triangle_ids[s.b];
-      out.hint = s;
-      out.stats.triangle_tests = 1;
-      suspects->add(s);
-      return out;
-    }
-  }
-  const DistanceResult r = query(pose, enough, false);
+  const DistanceResult r = query(pose, enough, false, {}, true, false, suspects->pairs);
   suspects->add(r.hint);
   return r;
 }

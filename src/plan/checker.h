@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 
 namespace swept::detail {
 
@@ -57,10 +58,10 @@ class Checker {
   /// The same query with its result: when exact (and above the margin), its witness points
   /// are the closest pair.
   /// With `suspects` (the pairs that blocked, or were closest at, the poses a search step tried
-  /// before) while set_decide_blocked is on: each is tried first, and one closer than the margin
-  /// decides the pose blocked in a triangle test (counted as the query it replaces); otherwise the
-  /// query runs as without them, so a free pose's result never depends on them. The query's
-  /// witness joins the suspects.
+  /// before) while set_decide_blocked is on: each is tried first (DistanceRequest::suspects), and
+  /// one closer than the margin decides the pose blocked in a triangle test; otherwise the query
+  /// runs as without them, so a free pose's result never depends on them. The query's witness
+  /// joins the suspects.
   DistanceResult measure(const Pose& pose, double enough, Suspects* suspects = nullptr) const;
   /// Is the distance at `pose` above the margin? The cheapest query: it stops as soon as every
   /// pair left is proved farther than the margin (nothing else is asked of it).
@@ -125,7 +126,7 @@ class Checker {
   /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on;
   /// `apart`: the pose is known free, DistanceRequest::apart).
   DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}, bool decide = true,
-                       bool apart = false) const;
+                       bool apart = false, std::span<const DistanceHint> suspects = {}) const;
 
   const PlanScene& scene_;
   double margin_;

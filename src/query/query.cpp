@@ -323,6 +323,28 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   DistanceSearch cold(a, b, rel, rel_err, abs_err, request.enough, request.exclude, request.exclude_if);
   const DistanceSearch* used = &cold;
 
+  // Suspects: the first pair below stop_below ends the query, as the search would end at it.
+  if (request.stop_below > -kInf) {
+    for (const DistanceHint& s : request.suspects) {
+      if (!s.valid() || s.a >= a.triangles.size() || s.b >= b.triangles.size() || warm.excluded(s.a, s.b)) continue;
+      ++warm.stats.triangle_tests;
+      TriangleDistance d;
+      if (!triangle_distance_below(a.triangles[s.a], rel.apply(b.triangles[s.b]), request.stop_below, d) ||
+          !(d.distance < request.stop_below))
+        continue;
+      DistanceResult out;
+      out.stats = warm.stats;
+      out.distance = d.distance;
+      out.exact = false;
+      out.point_a = pose_a.apply(d.point_a);
+      out.point_b = pose_a.apply(d.point_b);
+      out.triangle_a = a.triangle_ids[s.a];
+      out.triangle_b = b.triangle_ids[s.b];
+      out.hint = s;
+      return out;
+    }
+  }
+
   // Coherence: the previous query's closest pair, measured at these poses, is the answer so far.
   const DistanceHint h = request.hint;
   if (h.valid() && h.a < a.triangles.size() && h.b < b.triangles.size() && !warm.excluded(h.a, h.b)) {

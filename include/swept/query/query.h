@@ -84,6 +84,13 @@ struct DistanceRequest {
   /// search that otherwise starts every query is skipped: a pair below the threshold ends the
   /// search as a contact would.)
   double stop_below = -std::numeric_limits<double>::infinity();
+  /// With `stop_below`: triangle pairs (positions in the trees, as `DistanceResult::hint`) tried
+  /// before anything else, for instance the pairs that blocked nearby poses. The first one closer
+  /// than `stop_below` ends the query as the search would have ended at it; the others change
+  /// nothing (unlike `hint`, they never seed the search), so a query that finds none of them
+  /// below `stop_below` answers exactly as without them. Pairs out of range or left out are
+  /// ignored. Not owned.
+  std::span<const DistanceHint> suspects{};
   /// The caller knows the models are apart (a pose on a certified motion, a node of a search
   /// tree): the first-contact search that otherwise starts every query is skipped. The answer
   /// is the same, witness included; only the work differs (were they to overlap after all, the
