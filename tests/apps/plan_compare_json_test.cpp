@@ -29,7 +29,10 @@ CompareRow row() {
   r.ompl_fcl_build_ms = 3.5;
   for (std::uint32_t seed = 1; seed <= 3; ++seed)
     r.ompl.push_back({.seed = seed, .solved = seed != 2, .ms = 100.0 * seed, .status = "Exact solution",
-                      .waypoints = 5, .checks = 1000, .verified = seed == 3 ? "collides" : "free"});
+                      .waypoints = 5, .checks = 1000, .verified = seed == 3 ? "collides" : "free",
+                      .simplify_ms = seed == 1 ? 150.0 : seed == 3 ? 90.0 : 0.0,
+                      .simplified_verified = seed == 1 ? "collides" : seed == 3 ? "free" : "",
+                      .length = seed == 2 ? 0.0 : 7.0 * seed, .simplified_length = seed == 2 ? 0.0 : 5.0 * seed});
   return r;
 }
 
@@ -54,6 +57,13 @@ TEST(PlanCompareJson, RowsReadBack) {
   EXPECT_EQ(r.ompl_successes(), 2);
   EXPECT_EQ(r.ompl_colliding(), 1);
   EXPECT_EQ(r.ompl_median(), 200.0);
+  // Solve + simplify per seed: 250, 200 (not solved: nothing to simplify), 390.
+  EXPECT_EQ(r.ompl_median_with_simplify(), 250.0);
+  EXPECT_EQ(r.ompl_simplified_colliding(), 1);
+  EXPECT_EQ(r.ompl[2].simplify_ms, 90.0);
+  EXPECT_EQ(r.ompl[0].simplified_verified, "collides");
+  EXPECT_EQ(r.ompl[2].length, 21.0);
+  EXPECT_EQ(r.ompl[2].simplified_length, 15.0);
   EXPECT_EQ(r.ompl_fcl_build_ms, 3.5);
   EXPECT_EQ(r.swept_median(), 11.5);
   EXPECT_EQ(r.verdict(), rows[0].verdict());

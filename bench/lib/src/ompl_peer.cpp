@@ -117,6 +117,13 @@ class OutsideBoxGoal : public ob::GoalSampleableRegion {
 
 /// Checks every segment of a path (poses of the body frame, interpolated about `reference` as
 /// OMPL's SE(3) interpolation does) for contact along the continuous motion.
+// The path's length in swept's motion metric (PlanResult::path_length's).
+double metric_length(const PlanScene& scene, const std::vector<Pose>& poses) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < poses.size(); ++i) length += motion_length(poses[i - 1], poses[i], scene.reference, scene.radius);
+  return length;
+}
+
 std::string verify_path(const PlanScene& scene, const std::vector<Pose>& poses) {
   bool undecided = false;
   for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
@@ -217,6 +224,16 @@ OmplRun run_ompl(const Problem& pb, const SearchSpace& g, const PlanScene& scene
     std::vector<Pose> poses;
     for (const ob::State* s : states) poses.push_back(map.pose(s));
     run.verified = verify_path(scene, poses);
+    run.length = metric_length(scene, poses);
+    // OMPL's own smoothing, timed apart from the solve: swept's plan times include its
+    // smoothing, so solve + simplify is the like-for-like figure.
+    const auto t1 = Clock::now();
+    ss.simplifySolution();
+    run.simplify_ms = ms_since(t1);
+    std::vector<Pose> simplified;
+    for (const ob::State* s : ss.getSolutionPath().getStates()) simplified.push_back(map.pose(s));
+    run.simplified_verified = verify_path(scene, simplified);
+    run.simplified_length = metric_length(scene, simplified);
   }
   return run;
 }

@@ -67,8 +67,9 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
       if (i == 0) main_scene = std::move(*scene);
     }
     const SweptRun& s = row.swept.back();
-    std::fprintf(stderr, "  swept %-8s %-22s plan %10.1f ms  build %7.1f ms  waypoints %zu\n", std::string(to_string(s.fitter)).c_str(),
-                 std::string(status_name(s.result.status)).c_str(), s.plan_ms, s.build_ms, s.result.path.poses.size());
+    std::fprintf(stderr, "  swept %-8s %-22s plan %10.1f ms  build %7.1f ms  waypoints %zu  length %.4g\n",
+                 std::string(to_string(s.fitter)).c_str(), std::string(status_name(s.result.status)).c_str(), s.plan_ms,
+                 s.build_ms, s.result.path.poses.size(), s.result.path_length);
   }
   // More runs of the problem's fitter, as many in all as OMPL gets seeds (at least two): the
   // median time, and every run must give the same path.
@@ -107,9 +108,13 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
     const auto seed = static_cast<std::uint32_t>(k + 1);
     row.ompl.push_back(run_ompl(c.problem, g, *main_scene, *body, *obstacles, seed, o));
     const OmplRun& r = row.ompl.back();
-    std::fprintf(stderr, "  ompl  seed %-3u %-22s %10.1f ms  checks %llu  waypoints %zu%s%s\n", r.seed, r.status.c_str(),
+    std::fprintf(stderr, "  ompl  seed %-3u %-22s %10.1f ms  checks %llu  waypoints %zu%s%s", r.seed, r.status.c_str(),
                  r.ms, static_cast<unsigned long long>(r.checks), r.waypoints, r.solved ? "  path " : "",
                  r.verified.c_str());
+    if (r.solved)
+      std::fprintf(stderr, "  length %.4g  simplify %.1f ms: length %.4g, path %s", r.length, r.simplify_ms,
+                   r.simplified_length, r.simplified_verified.c_str());
+    std::fprintf(stderr, "\n");
   }
   return row;
 }

@@ -30,8 +30,8 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     if (r.error.empty() && r.swept_time_limit != limit)
       std::printf("swept's limit on %s: %.0f s (OMPL's: %.0f s)\n", r.name.c_str(), r.swept_time_limit, limit);
   if (collide_only) std::printf("OMPL's validity check: fcl::collide only (no clearance; swept still certifies it)\n");
-  std::printf("%-18s %9s %11s %11s %-20s %5s | %7s %11s %21s %6s | %8s  %s\n", "problem", "clearance", "swept ms",
-              "(+build)", "swept status", "wayp", "OMPL ok", "median ms", "min-max ms", "hit", "ratio", "goal");
+  std::printf("%-18s %9s %11s %11s %-20s %5s | %7s %11s %21s %6s %11s | %8s %8s  %s\n", "problem", "clearance", "swept ms",
+              "(+build)", "swept status", "wayp", "OMPL ok", "median ms", "min-max ms", "hit", "+simplify", "ratio", "ratio+s", "goal");
   for (const CompareRow& r : rows) {
     if (!r.error.empty()) {
       std::printf("%-18s  not run: %s\n", r.name.c_str(), r.error.c_str());
@@ -40,15 +40,19 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     const SweptRun& s = r.main();
     const std::string ok = std::to_string(r.ompl_successes()) + "/" + std::to_string(r.ompl.size());
     const std::string range = fmt(r.ompl_min()) + "-" + fmt(r.ompl_max());
-    std::printf("%-18s %9g %11s %11s %-20s %5zu | %7s %11s %21s %6d | %8s  %s\n", r.name.c_str(), r.clearance,
+    const std::string hit = std::to_string(r.ompl_colliding()) + "/" + std::to_string(r.ompl_simplified_colliding());
+    std::printf("%-18s %9g %11s %11s %-20s %5zu | %7s %11s %21s %6s %11s | %8s %8s  %s\n", r.name.c_str(), r.clearance,
                 fmt(r.swept_median()).c_str(), fmt(r.swept_median() + s.build_ms).c_str(), std::string(status_name(s.result.status)).c_str(),
-                s.result.path.poses.size(), ok.c_str(), fmt(r.ompl_median()).c_str(), range.c_str(), r.ompl_colliding(),
-                fmt(r.ompl_median() / std::max(r.swept_median(), 1e-9), 2).c_str(), r.verdict().c_str());
+                s.result.path.poses.size(), ok.c_str(), fmt(r.ompl_median()).c_str(), range.c_str(), hit.c_str(),
+                fmt(r.ompl_median_with_simplify()).c_str(), fmt(r.ompl_median() / std::max(r.swept_median(), 1e-9), 2).c_str(),
+                fmt(r.ompl_median_with_simplify() / std::max(r.swept_median(), 1e-9), 2).c_str(), r.verdict().c_str());
   }
   std::printf("swept ms: plan() on the prebuilt trees, median of as many runs as OMPL has seeds (same path each run); "
               "(+build): with the tree build. OMPL ok: exact solutions; "
               "median over all seeds, failures counted at the limit; hit: OMPL solutions that swept's certified "
-              "motion check finds in contact between OMPL's discrete motion samples; ratio: OMPL median / swept ms.\n");
+              "motion check finds in contact between OMPL's discrete motion samples (raw path / simplified path); "
+              "+simplify: median of OMPL's solve + its simplifySolution() (swept ms include swept's smoothing); "
+              "ratio: OMPL median / swept ms (the goal's figure); ratio+s: OMPL +simplify / swept ms.\n");
   std::printf("\nswept per fitter (plan ms of the first run without the tree build; build ms; status) and determinism\n");
   std::printf("%-18s", "problem");
   for (const FitterInfo& f : all_fitters()) std::printf(" %28s", std::string(f.name).c_str());

@@ -35,6 +35,11 @@ int CompareRow::ompl_colliding() const {
   return static_cast<int>(std::count_if(ompl.begin(), ompl.end(), [](const OmplRun& r) { return r.verified == "collides"; }));
 }
 
+int CompareRow::ompl_simplified_colliding() const {
+  return static_cast<int>(
+      std::count_if(ompl.begin(), ompl.end(), [](const OmplRun& r) { return r.simplified_verified == "collides"; }));
+}
+
 int CompareRow::ompl_successes() const {
   return static_cast<int>(std::count_if(ompl.begin(), ompl.end(), [](const OmplRun& r) { return r.solved; }));
 }
@@ -42,6 +47,12 @@ int CompareRow::ompl_successes() const {
 double CompareRow::ompl_median() const {
   std::vector<double> t;
   for (const auto& r : ompl) t.push_back(r.ms);
+  return median(std::move(t));
+}
+
+double CompareRow::ompl_median_with_simplify() const {
+  std::vector<double> t;
+  for (const auto& r : ompl) t.push_back(r.ms + r.simplify_ms);
   return median(std::move(t));
 }
 
@@ -136,11 +147,18 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
                            {"ms", o.ms},
                            {"waypoints", o.waypoints},
                            {"path_verified", o.verified},
-                           {"validity_checks", o.checks}});
+                           {"validity_checks", o.checks},
+                           {"simplify_ms", o.simplify_ms},
+                           {"simplified_path_verified", o.simplified_verified},
+                           {"path_length", o.length},
+                           {"simplified_path_length", o.simplified_length}});
     p["ompl_successes"] = r.ompl_successes();
     p["ompl_paths_colliding"] = r.ompl_colliding();
     p["ompl_median_ms"] = r.ompl_median();
+    p["ompl_simplified_paths_colliding"] = r.ompl_simplified_colliding();
+    p["ompl_median_with_simplify_ms"] = r.ompl_median_with_simplify();
     p["ratio_ompl_median_over_swept"] = r.ompl_median() / std::max(r.swept_median(), 1e-9);
+    p["ratio_ompl_median_with_simplify_over_swept"] = r.ompl_median_with_simplify() / std::max(r.swept_median(), 1e-9);
     p["goal"] = r.verdict();
     j["problems"].push_back(p);
   }
@@ -198,6 +216,10 @@ std::vector<CompareRow> rows_from_json(const nlohmann::json& j) {
       run.waypoints = o.value("waypoints", std::size_t{0});
       run.verified = o.value("path_verified", "");
       run.checks = o.value("validity_checks", std::uint64_t{0});
+      run.simplify_ms = o.value("simplify_ms", 0.0);  // absent before 2026-11-27
+      run.simplified_verified = o.value("simplified_path_verified", "");
+      run.length = o.value("path_length", 0.0);
+      run.simplified_length = o.value("simplified_path_length", 0.0);
       r.ompl.push_back(std::move(run));
     }
     rows.push_back(std::move(r));

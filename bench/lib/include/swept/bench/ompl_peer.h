@@ -13,10 +13,11 @@
 ///   extent); planner: RRTConnect with its default range; goal: GoalState, or for `goal outside`
 ///   problems a GoalSampleableRegion "the sphere of radius r_max about c is outside the
 ///   obstacles' box grown by the margin" (swept's goal test).
-/// - seeds: ompl::RNG::setSeed(seed) before each run; time: the solve call only (no
-///   simplification; OMPL's raw solve time). Each solution is then re-checked, outside the
-///   timing, by swept's certified motion query (margin 0) to count the paths that collide
-///   between the discrete samples.
+/// - seeds: ompl::RNG::setSeed(seed) before each run; time: the solve call only (OMPL's raw
+///   solve time). Each solution is then re-checked, outside the timing, by swept's certified
+///   motion query (margin 0) to count the paths that collide between the discrete samples;
+///   then simplified by SimpleSetup::simplifySolution() (OMPL's defaults), timed on its own
+///   (OmplRun::simplify_ms), and the simplified path re-checked the same way.
 #include "swept/bench/plan_compare.h"
 #include "swept/bench/search_space.h"
 

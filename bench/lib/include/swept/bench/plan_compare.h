@@ -60,6 +60,15 @@ struct OmplRun {
   /// The solution path re-checked between OMPL's samples by swept's certified motion query
   /// (margin 0): "free", "collides" (a pose in contact was found), or "undecided".
   std::string verified;
+  /// After a solution, outside `ms`: OMPL's own shortcutting of the path
+  /// (SimpleSetup::simplifySolution() with its defaults, as an OMPL.app user gets it), its time,
+  /// and the simplified path re-checked as `verified` is. 0 and "" when not solved.
+  double simplify_ms = 0.0;
+  std::string simplified_verified;
+  /// The raw and the simplified path's length in swept's motion metric (Σ ‖Δc‖ + r_max·θ about
+  /// the scene's reference point, as PlanResult::path_length); 0 when not solved.
+  double length = 0.0;
+  double simplified_length = 0.0;
 };
 
 /// One problem's results.
@@ -92,9 +101,14 @@ struct CompareRow {
   /// Median over the runs of the problem's fitter: compared with OMPL's median over seeds.
   double swept_median() const;
   int ompl_colliding() const;
+  /// Solutions whose simplified path swept's motion check finds in contact.
+  int ompl_simplified_colliding() const;
   int ompl_successes() const;
   /// Median over all seeds, failures counted at the time they took (the limit).
   double ompl_median() const;
+  /// Median over all seeds of solve + simplification: a path smoothed as swept's is (swept's
+  /// times include its smoothing). Failures count at the limit, as in ompl_median().
+  double ompl_median_with_simplify() const;
   double ompl_min() const;
   double ompl_max() const;
   /// The goal for this problem: "met: >= 3x", "MISSED: OMPL solves it", ...
