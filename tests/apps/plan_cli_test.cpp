@@ -75,7 +75,8 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   const auto doc = nlohmann::json::parse(r.out);
   for (const char* key : {"solved", "waypoints", "path_length", "min_clearance", "time_ms", "queries", "path_hash"})
     EXPECT_TRUE(doc.contains(key)) << key;
-  for (const char* key : {"build", "search", "smooth", "total"}) EXPECT_TRUE(doc["time_ms"].contains(key)) << key;
+  for (const char* key : {"build", "search", "smooth", "total", "cpu"}) EXPECT_TRUE(doc["time_ms"].contains(key)) << key;
+  EXPECT_GT(doc["time_ms"]["cpu"].get<double>(), 0.0);  // the planner's threads' time, after the build
   for (const char* key : {"distance", "proximity", "sweep"}) EXPECT_TRUE(doc["queries"].contains(key)) << key;
   EXPECT_TRUE(doc["solved"].get<bool>());
   EXPECT_GE(doc["min_clearance"].get<double>(), 0.1);
