@@ -7,11 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <ctime>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
-#include <ctime>
 #include <unistd.h>
 
 namespace swept::cli {

@@ -115,15 +115,15 @@ class OutsideBoxGoal : public ob::GoalSampleableRegion {
   mutable ompl::RNG rng_;
 };
 
-/// Checks every segment of a path (poses of the body frame, interpolated about `reference` as
-/// OMPL's SE(3) interpolation does) for contact along the continuous motion.
-// The path's length in swept's motion metric (PlanResult::path_length's).
+/// The path's length in swept's motion metric (PlanResult::path_length's).
 double metric_length(const PlanScene& scene, const std::vector<Pose>& poses) {
   double length = 0.0;
   for (std::size_t i = 1; i < poses.size(); ++i) length += motion_length(poses[i - 1], poses[i], scene.reference, scene.radius);
   return length;
 }
 
+/// Checks every segment of a path (poses of the body frame, interpolated about `reference` as
+/// OMPL's SE(3) interpolation does) for contact along the continuous motion.
 std::string verify_path(const PlanScene& scene, const std::vector<Pose>& poses) {
   bool undecided = false;
   for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
