@@ -490,6 +490,80 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
   return all;
 }
 
+std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) {
+  if (certify_path(tree_a, node_a, tree_b, node_b)) return path_through(tree_a, node_a, tree_b, node_b);
+  if (context_.out_of_time() || context_.over_budget() || bridge_misses_ >= kBridgeMisses) return std::nullopt;
+  // The waypoints start first, each with whether its motion to the next is certified (a node's
+  // `certified` flag is its edge to its parent's: the next waypoint's in the start's tree, its
+  // own in the goal's tree).
+  struct Waypoint {
+    const TreeNode* node;
+    bool clear = true;
+  };
+  std::vector<Waypoint> way;
+  auto up = [&](int tree, std::int32_t node) {
+    std::vector<const TreeNode*> chain;
+    for (std::int32_t i = node; i >= 0; i = trees_[tree][i].parent) chain.push_back(&trees_[tree][i]);
+    return chain;
+  };
+  std::vector<const TreeNode*> from_start = tree_a == 0 ? up(tree_a, node_a) : up(tree_b, node_b);
+  std::vector<const TreeNode*> to_goal;
+  if (node_b >= 0) to_goal = tree_a == 0 ? up(tree_b, node_b) : up(tree_a, node_a);
+  for (auto it = from_start.rbegin(); it != from_start.rend(); ++it) {
+    if (!way.empty()) way.back().clear = (*it)->certified;
+    way.push_back({*it});
+  }
+  for (std::size_t k = 0; k < to_goal.size(); ++k) {
+    const TreeNode* n = to_goal[k];
+    // The two halves meet at the same pose: kept once, as in path_through.
+    const bool same = k == 0 && !way.empty() && way.back().node->pose.rotation == n->pose.rotation &&
+                      way.back().node->pose.translation == n->pose.translation;
+    if (!same) way.push_back({n});
+    way.back().clear = n->certified;  // its edge leads to its parent, the next waypoint
+  }
+  way.back().clear = true;  // the goal's tree's root: no motion after it
+
+  // Each failed motion (i, i+1) is bridged by the first certified motion in kBridges from a
+  // waypoint a ≤ i to one b ≥ i + 1 (not before the end of the last bridge): the path then skips
+  // the waypoints in between. The lazy edges a path crosses fail at a wall's corner, which a
+  // motion from one waypoint further back or on usually clears.
+  std::vector<std::size_t> kept{0};
+  std::size_t floor = 0;
+  std::size_t i = 0;
+  while (i + 1 < way.size()) {
+    if (way[i].clear) {
+      kept.push_back(++i);
+      continue;
+    }
+    bool bridged = false;
+    for (const auto& [back, ahead] : kBridges) {
+      if (back > i - floor || i + ahead >= way.size()) continue;
+      const TreeNode& a = *way[i - back].node;
+      const TreeNode& b = *way[i + ahead].node;
+      ++context_.edges_checked;
+      ++bridges_tried_;
+      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries)) {
+        kept.resize(kept.size() - back);
+        i += ahead;
+        kept.push_back(i);
+        floor = i;
+        bridged = true;
+        ++bridges_;
+        break;
+      }
+      if (context_.out_of_time() || context_.over_budget()) return std::nullopt;
+    }
+    if (!bridged) {
+      ++bridge_misses_;
+      return std::nullopt;
+    }
+  }
+  std::vector<Pose> path;
+  path.reserve(kept.size());
+  for (std::size_t k : kept) path.push_back(way[k].node->pose);
+  return path;
+}
+
 std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint64_t max_rounds) {
   std::vector<Attempt> attempts(kRound);
   std::vector<Pose> targets(kRound);
@@ -546,9 +620,11 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
         // The first of the new nodes in the goal region (each is the next one's parent) ends the path.
         std::int32_t end = grown - static_cast<std::int32_t>(a.grown.size()) + 1;
         while (!goal_reached(context_.space, context_.problem, trees_[0][end].pose)) ++end;
-        if (alive_path(trees_[0], end) && certify_path(0, end, 0, -1)) {
-          outcome = TreeOutcome::found;
-          return path_through(0, end, 0, -1);
+        if (alive_path(trees_[0], end)) {
+          if (auto path = join(0, end, 0, -1)) {
+            outcome = TreeOutcome::found;
+            return path;
+          }
         }
         if (context_.out_of_time()) break;
         continue;
@@ -558,9 +634,9 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
       const std::int32_t reach = a.chain.empty() ? a.meet : append(trees_[1 - grow], a.chain);
       propagate_dead(trees_[1 - grow], chain_first);
       if (a.connected && alive_path(trees_[grow], grown) && alive_path(trees_[1 - grow], reach)) {
-        if (certify_path(grow, grown, 1 - grow, reach)) {
+        if (auto path = join(grow, grown, 1 - grow, reach)) {
           outcome = TreeOutcome::found;
-          return path_through(grow, grown, 1 - grow, reach);
+          return path;
         }
         if (context_.out_of_time()) break;
       }

@@ -206,8 +206,10 @@ TEST(TreeSearch, LazyEdgesAreCertifiedBeforeAPathUsesThem) {
   // are free) and certified only when a path joining the ends uses them; those whose
   // certificate fails are cut with the subtrees below them. The path that comes out must pass
   // the independent check, at any thread count, and the house must actually cut edges (else
-  // this test does not test the cut).
-  std::vector<std::uint64_t> hashes, cut;
+  // this test does not test the cut). An edge that fails is bridged by a certified motion between
+  // the waypoints around it when one is free; the house's first joined path is saved so (else
+  // this test does not test the bridges).
+  std::vector<std::uint64_t> hashes, cut, bridges;
   for (int threads : {1, 2}) {
     PhaseRig rig(scenes::suite::house().problem, 120.0);
     rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
@@ -221,10 +223,14 @@ TEST(TreeSearch, LazyEdgesAreCertifiedBeforeAPathUsesThem) {
     check_path_independently(rig.scene, rig.problem(), Path{*path});
     hashes.push_back(path_hash(Path{*path}));
     cut.push_back(search.lazy_cut());
+    bridges.push_back(search.bridges());
+    EXPECT_GE(search.bridges_tried(), search.bridges());
   }
   EXPECT_EQ(hashes[0], hashes[1]);
   EXPECT_EQ(cut[0], cut[1]);
   EXPECT_GT(cut[0], 0u);
+  EXPECT_EQ(bridges[0], bridges[1]);
+  EXPECT_GT(bridges[0], 0u);
 }
 
 TEST(TreeSearch, BlockedPosesDecidedOrMeasuredGiveTheSameTrees) {
