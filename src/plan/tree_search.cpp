@@ -515,7 +515,8 @@ std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_
   }
   for (std::size_t k = 0; k < to_goal.size(); ++k) {
     const TreeNode* n = to_goal[k];
-    // The two halves meet at the same pose: kept once, as in path_through.
+    // The two halves meet at the same pose: kept once, as in path_through (otherwise they differ
+    // by rounding only, a motion of length 0 in the metric: `reached`, and clear).
     const bool same = k == 0 && !way.empty() && way.back().node->pose.rotation == n->pose.rotation &&
                       way.back().node->pose.translation == n->pose.translation;
     if (!same) way.push_back({n});

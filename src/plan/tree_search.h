@@ -74,6 +74,16 @@ class TreeSearch {
 
   /// Samples per round: fixed, so that the trees do not depend on the number of threads.
   static constexpr int kRound = 8;
+  /// The bridges tried round a failed edge (i, i+1), in order: from waypoint i − back to
+  /// waypoint i + ahead.
+  static constexpr std::array<std::pair<std::size_t, std::size_t>, 8> kBridges{
+      {{1, 1}, {0, 2}, {1, 2}, {2, 1}, {0, 3}, {2, 2}, {1, 3}, {3, 1}}};
+  /// A bridge that needs more bisection queries than this grazes the margin: not taken.
+  static constexpr int kBridgeQueries = 256;
+  /// Joins with an edge no bridge clears, after which no more bridges are tried: where joins
+  /// keep failing, their edges cross whole walls (the cubicles, the spiral tube), and the tries
+  /// only cost (the spiral tube: 6 % more queries and 26 % more time with no limit).
+  static constexpr int kBridgeMisses = 4;
 
   std::size_t nodes() const { return trees_[0].size() + trees_[1].size(); }
   std::uint64_t samples() const { return sample_index_; }
@@ -83,6 +93,8 @@ class TreeSearch {
   /// Bridges round failed edges taken, and tried.
   std::uint64_t bridges() const { return bridges_; }
   std::uint64_t bridges_tried() const { return bridges_tried_; }
+  /// Joins that had an edge no bridge cleared (no more bridges after kBridgeMisses of them).
+  int bridge_misses() const { return bridge_misses_; }
 
   /// The configuration of sample `i` (≥ 1): the reference point uniform in the bounds, the
   /// rotation uniform over SO(3) (Shoemake's map) — except every fourth sample, whose rotation
@@ -153,16 +165,6 @@ class TreeSearch {
   /// kBridgeMisses joins have had an edge without one. Nullopt when an edge that failed has no
   /// bridge.
   std::optional<std::vector<Pose>> join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b);
-  /// The bridges tried round a failed edge (i, i+1), in order: from waypoint i − back to
-  /// waypoint i + ahead.
-  static constexpr std::array<std::pair<std::size_t, std::size_t>, 8> kBridges{
-      {{1, 1}, {0, 2}, {1, 2}, {2, 1}, {0, 3}, {2, 2}, {1, 3}, {3, 1}}};
-  /// A bridge that needs more bisection queries than this grazes the margin: not taken.
-  static constexpr int kBridgeQueries = 256;
-  /// Joins with an edge no bridge clears, after which no more bridges are tried: where joins
-  /// keep failing, their edges cross whole walls (the cubicles, the spiral tube), and the tries
-  /// only cost (the spiral tube: 6 % more queries and 26 % more time with no limit).
-  static constexpr int kBridgeMisses = 4;
   /// Marks dead the nodes of `tree` from index `first` on whose parent is dead.
   void propagate_dead(std::vector<TreeNode>& tree, std::size_t first);
   static bool alive_path(const std::vector<TreeNode>& tree, std::int32_t node);

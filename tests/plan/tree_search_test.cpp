@@ -233,6 +233,27 @@ TEST(TreeSearch, LazyEdgesAreCertifiedBeforeAPathUsesThem) {
   EXPECT_GT(bridges[0], 0u);
 }
 
+TEST(TreeSearch, BridgesStopAfterFourJoinsWithoutOne) {
+  // The cubicles' joined paths fail where long steps cross whole walls between cubicles or
+  // floors, which no motion between nearby waypoints avoids: after kBridgeMisses such joins no
+  // bridge is tried any more, so the tries stay within kBridgeMisses × kBridges (each miss stops
+  // at its first edge without a bridge), however many joins fail after them. The path is the one
+  // the later joins find, and passes the independent check.
+  PhaseRig rig(scenes::suite::cubicles().problem, 120.0);
+  rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
+  const Pose start = rig.problem().start;
+  detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
+  detail::TreeOutcome outcome = detail::TreeOutcome::time_limit;
+  const auto path = search.run(outcome);
+  ASSERT_TRUE(path) << search.nodes() << " nodes";
+  EXPECT_EQ(search.bridges(), 0u);
+  EXPECT_EQ(search.bridge_misses(), detail::TreeSearch::kBridgeMisses);
+  EXPECT_GT(search.bridges_tried(), 0u);
+  EXPECT_LE(search.bridges_tried(), detail::TreeSearch::kBridgeMisses * detail::TreeSearch::kBridges.size());
+  EXPECT_GT(search.lazy_cut(), static_cast<std::uint64_t>(detail::TreeSearch::kBridgeMisses));  // joins failed after the misses too
+  check_path_independently(rig.scene, rig.problem(), Path{*path});
+}
+
 TEST(TreeSearch, BlockedPosesDecidedOrMeasuredGiveTheSameTrees) {
   // The planner's search stops a query at the first pair under the margin (Checker::
   // set_decide_blocked): a blocked pose's distance is then some pair's, not the smallest. Every
