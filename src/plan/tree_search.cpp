@@ -419,24 +419,39 @@ std::int32_t TreeSearch::append(std::vector<TreeNode>& tree, const std::vector<T
   return static_cast<std::int32_t>(tree.size() - 1);
 }
 
-std::vector<Pose> TreeSearch::path_through(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const {
-  // Root of tree a … node a, then node b … root of tree b; tree 0 grows from the start.
-  std::vector<Pose> first, second;
-  for (std::int32_t i = node_a; i >= 0; i = trees_[tree_a][i].parent) first.push_back(trees_[tree_a][i].pose);
-  std::reverse(first.begin(), first.end());
-  if (node_b >= 0)
-    for (std::int32_t i = node_b; i >= 0; i = trees_[tree_b][i].parent) second.push_back(trees_[tree_b][i].pose);
-  if (tree_a != 0) {
-    std::swap(first, second);
-    std::reverse(first.begin(), first.end());
-    std::reverse(second.begin(), second.end());
+std::vector<TreeSearch::Waypoint> TreeSearch::waypoints(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const {
+  // Root of tree 0 (the start's) … its node, then the goal tree's node … its root. A node's
+  // `certified` flag is that of its edge to its parent: in the start's tree the motion to it from
+  // the waypoint before, in the goal's tree the motion from it to the next waypoint.
+  auto up = [&](int tree, std::int32_t node) {
+    std::vector<const TreeNode*> chain;
+    for (std::int32_t i = node; i >= 0; i = trees_[tree][i].parent) chain.push_back(&trees_[tree][i]);
+    return chain;
+  };
+  const std::vector<const TreeNode*> from_start = tree_a == 0 ? up(tree_a, node_a) : up(tree_b, node_b);
+  std::vector<const TreeNode*> to_goal;
+  if (node_b >= 0) to_goal = tree_a == 0 ? up(tree_b, node_b) : up(tree_a, node_a);
+  std::vector<Waypoint> way;
+  for (auto it = from_start.rbegin(); it != from_start.rend(); ++it) {
+    if (!way.empty()) way.back().edge = *it;
+    way.push_back({*it});
   }
-  // The two halves meet at the same pose: keep it once.
-  if (!first.empty() && !second.empty() && first.back().rotation == second.front().rotation &&
-      first.back().translation == second.front().translation)
-    second.erase(second.begin());
-  first.insert(first.end(), second.begin(), second.end());
-  return first;
+  for (std::size_t k = 0; k < to_goal.size(); ++k) {
+    const TreeNode* n = to_goal[k];
+    // The two halves meet at the same pose: kept once (otherwise they differ by rounding only,
+    // a motion of length 0 in the metric — reach_for's `reached` — with no edge of its own).
+    const bool same = k == 0 && !way.empty() && way.back().node->pose.rotation == n->pose.rotation &&
+                      way.back().node->pose.translation == n->pose.translation;
+    if (!same) way.push_back({n});
+    way.back().edge = n->parent >= 0 ? n : nullptr;  // the goal tree's root: no motion after it
+  }
+  return way;
+}
+
+std::vector<Pose> TreeSearch::path_through(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const {
+  std::vector<Pose> path;
+  for (const Waypoint& w : waypoints(tree_a, node_a, tree_b, node_b)) path.push_back(w.node->pose);
+  return path;
 }
 
 void TreeSearch::propagate_dead(std::vector<TreeNode>& tree, std::size_t first) {
@@ -493,36 +508,8 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
 std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) {
   if (certify_path(tree_a, node_a, tree_b, node_b)) return path_through(tree_a, node_a, tree_b, node_b);
   if (context_.out_of_time() || context_.over_budget() || bridge_misses_ >= kBridgeMisses) return std::nullopt;
-  // The waypoints start first, each with whether its motion to the next is certified (a node's
-  // `certified` flag is its edge to its parent's: the next waypoint's in the start's tree, its
-  // own in the goal's tree).
-  struct Waypoint {
-    const TreeNode* node;
-    bool clear = true;
-  };
-  std::vector<Waypoint> way;
-  auto up = [&](int tree, std::int32_t node) {
-    std::vector<const TreeNode*> chain;
-    for (std::int32_t i = node; i >= 0; i = trees_[tree][i].parent) chain.push_back(&trees_[tree][i]);
-    return chain;
-  };
-  std::vector<const TreeNode*> from_start = tree_a == 0 ? up(tree_a, node_a) : up(tree_b, node_b);
-  std::vector<const TreeNode*> to_goal;
-  if (node_b >= 0) to_goal = tree_a == 0 ? up(tree_b, node_b) : up(tree_a, node_a);
-  for (auto it = from_start.rbegin(); it != from_start.rend(); ++it) {
-    if (!way.empty()) way.back().clear = (*it)->certified;
-    way.push_back({*it});
-  }
-  for (std::size_t k = 0; k < to_goal.size(); ++k) {
-    const TreeNode* n = to_goal[k];
-    // The two halves meet at the same pose: kept once, as in path_through (otherwise they differ
-    // by rounding only, a motion of length 0 in the metric: `reached`, and clear).
-    const bool same = k == 0 && !way.empty() && way.back().node->pose.rotation == n->pose.rotation &&
-                      way.back().node->pose.translation == n->pose.translation;
-    if (!same) way.push_back({n});
-    way.back().clear = n->certified;  // its edge leads to its parent, the next waypoint
-  }
-  way.back().clear = true;  // the goal's tree's root: no motion after it
+  const std::vector<Waypoint> way = waypoints(tree_a, node_a, tree_b, node_b);
+  auto clear = [&](std::size_t i) { return way[i].edge == nullptr || way[i].edge->certified; };
 
   // Each failed motion (i, i+1) is bridged by the first certified motion in kBridges from a
   // waypoint a ≤ i to one b ≥ i + 1 (not before the end of the last bridge): the path then skips
@@ -532,7 +519,7 @@ std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_
   std::size_t floor = 0;
   std::size_t i = 0;
   while (i + 1 < way.size()) {
-    if (way[i].clear) {
+    if (clear(i)) {
       kept.push_back(++i);
       continue;
     }

@@ -154,6 +154,14 @@ class TreeSearch {
   /// Appends an attempt's chain to `tree`; the index of its last node.
   static std::int32_t append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain);
   bool inside(const Pose& pose) const;
+  /// A waypoint of the path through two trees' nodes, and the node whose `certified` flag is the
+  /// motion from it to the next waypoint (none: the last waypoint, or where the trees meet).
+  struct Waypoint {
+    const TreeNode* node = nullptr;
+    const TreeNode* edge = nullptr;
+  };
+  /// The path through node_a of tree_a and node_b of tree_b (node_b −1: none), start first.
+  std::vector<Waypoint> waypoints(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const;
   std::vector<Pose> path_through(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const;
   /// Certifies the uncertified edges of the path through node_a of tree_a and node_b of tree_b
   /// (node_b −1: none), in parallel; edges that fail are cut (their nodes and the subtrees below
