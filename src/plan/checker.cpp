@@ -35,6 +35,13 @@ bool Checker::free(const Pose& pose) const {
   return query(pose, above, false).distance > margin_;
 }
 
+bool Checker::blocked_at_samples(const Pose& a, const Pose& b) const {
+  const Motion m = motion(a, b);
+  for (const double t : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875})
+    if (!free(m.at(t))) return true;
+  return false;
+}
+
 DistanceResult Checker::nearest(const Pose& pose, double enough) const {
   return query(pose, enough, false, {}, false, /*apart=*/true);
 }

@@ -95,6 +95,14 @@ class Checker {
   /// whose own work is serial.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
                       int max_queries = kMaxCertificateQueries, bool paired = false) const;
+  /// A cheap refusal before a long motion's certificate: true when one of the poses at
+  /// t = 1/2, 1/4, 3/4, 1/8, …, 7/8 of the motion a → b (in that order, stopping at the first)
+  /// is within the margin (`free`), so the certificate, which asks for more than the margin
+  /// everywhere, would not clear it. False says nothing: the motion may still be blocked
+  /// between the samples. A free sample costs a query that stops once every pair is proved
+  /// farther than the margin, where the certificate's ask for an exact distance up to half
+  /// the motion's length.
+  bool blocked_at_samples(const Pose& a, const Pose& b) const;
   /// Certified clear?
   bool clear(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const {
     return certify(a, da, b, db, relaxed).clear();

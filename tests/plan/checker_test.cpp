@@ -92,6 +92,31 @@ TEST(Checker, AMotionThatTurnsKeepsTheCertificate) {
   EXPECT_GT(check.distance_queries(), static_cast<std::uint64_t>(detail::Checker::kSweepAfter));
 }
 
+TEST(Checker, ASampleWithinTheMarginRefusesOnlyBlockedMotions) {
+  // Over the floor at margin + gap: no sample is within the margin, the pre-check says nothing.
+  const GeneratedProblem flat = body_over_a_floor(false);
+  const PlanScene flat_scene = scene_of(flat);
+  const detail::Checker flat_check(flat_scene, kMargin);
+  EXPECT_FALSE(flat_check.blocked_at_samples(flat.problem.start, *flat.problem.goal));
+  // Over the bump (blocked for t in [0.668, 0.832], worked out above): the sample t = 3/4 lies
+  // in it, and so does the certificate's answer.
+  const GeneratedProblem g = body_over_a_floor(true);
+  const PlanScene scene = scene_of(g);
+  const detail::Checker check(scene, kMargin);
+  EXPECT_TRUE(check.blocked_at_samples(g.problem.start, *g.problem.goal));
+  EXPECT_EQ(check.distance_queries(), 3u) << "t = 1/2, 1/4, then 3/4, where it stops";
+  const Pose at = interpolate(g.problem.start, *g.problem.goal, 0.75, scene.reference);
+  EXPECT_LE(distance(scene.obstacle_tree, Pose{}, scene.body_tree, at).distance, kMargin);
+  EXPECT_EQ(check.certify(g.problem.start, -1, *g.problem.goal, -1).status, MotionStatus::blocked);
+  // From x = −10 to x = 24 (t = (x + 10) / 34) the blocked stretch x in [3.36, 6.64] is t in
+  // [0.393, 0.489], between the samples t = 3/8 (x = 2.75) and 1/2 (x = 7): the pre-check says
+  // nothing, and the certificate finds it blocked.
+  Pose far = *g.problem.goal;
+  far.translation.x() = 24;
+  EXPECT_FALSE(check.blocked_at_samples(g.problem.start, far));
+  EXPECT_EQ(check.certify(g.problem.start, -1, far, -1).status, MotionStatus::blocked);
+}
+
 TEST(Checker, SuspectsDecideOnlyWhatTheQueryWould) {
   // A walk of short random steps through the L-tunnel's walls, as a search tree's steps go: each
   // pose measured twice, plainly and with the pairs the walk's earlier poses found closest or
