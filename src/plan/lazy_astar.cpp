@@ -38,7 +38,7 @@ void LazyGridSearch::report_progress(int level) {
   const double now = context_.elapsed_s();
   if (now - last_progress_s_ < 1.0) return;
   last_progress_s_ = now;
-  context_.options.progress({level, nodes_.size(), context_.check.distance_queries(), now});
+  context_.report({level, nodes_.size(), context_.check.distance_queries(), now});
 }
 
 // An entry is a (node, parent) pair; a node and the edge from its parent are checked only when

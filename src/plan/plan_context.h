@@ -6,8 +6,10 @@
 #include "swept/plan/planner.h"
 #include "swept/plan/search_space.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <mutex>
 
 namespace swept::detail {
 
@@ -19,7 +21,17 @@ struct PlanContext {
   const PlanOptions& options;
   Clock::time_point started;
   double time_limit_s = 60.0;
-  std::size_t edges_checked = 0;  ///< motions certified by the search (not the final pass)
+  /// Motions certified by the search (not the final pass); the grid and the trees add to it at
+  /// the same time.
+  std::atomic<std::size_t> edges_checked = 0;
+  std::mutex progress_mutex;  ///< the grid and the trees report progress from their own threads
+
+  /// Calls PlanOptions::progress, if any, one report at a time.
+  void report(const PlanProgress& progress) {
+    if (!options.progress) return;
+    const std::lock_guard lock(progress_mutex);
+    options.progress(progress);
+  }
 
   double elapsed_s() const { return std::chrono::duration<double>(Clock::now() - started).count(); }
   bool out_of_time() const { return elapsed_s() > time_limit_s; }

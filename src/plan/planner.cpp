@@ -24,7 +24,9 @@
 #include "swept/plan/search_space.h"
 
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
+#include <atomic>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -160,29 +162,52 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
       r.level = -1;
     }
   }
+  // Phases 2 and 3: the grid, with its budget, and the trees from both ends, until the time
+  // limit. The grid's path, when it finds one, is the plan; otherwise the trees'. With two cores
+  // or more and no query budget the trees grow while the grid searches (the grid's work is
+  // mostly serial: one core idles), and stop when the grid decides the plan; the trees do not
+  // depend on when they run, so the path is the one the phases give in turn, which they do at
+  // one thread, and under a query budget (whose count must not depend on the other phase).
   detail::GridOutcome outcome = detail::GridOutcome::resolution;
   if (!found && !context.out_of_time()) {
-    if (auto cells = grid_search.run(outcome, kGridBudget)) {
-      path = std::move(*cells);
-      found = true;
+    const double goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
+    std::atomic<bool> stop_trees{false};
+    std::optional<std::vector<Pose>> tree_path;
+    detail::TreeOutcome tree_outcome = detail::TreeOutcome::time_limit;
+    std::size_t tree_nodes = 0;
+    auto grow_trees = [&] {
+      detail::TreeSearch trees(context, start, start_distance, goal_distance);
+      trees.set_cancel(&stop_trees);
+      tree_path = trees.run(tree_outcome);
+      tree_nodes = trees.nodes();
+    };
+    std::optional<std::vector<Pose>> cells;
+    if (!options.max_queries && tbb::this_task_arena::max_concurrency() >= 2) {
+      tbb::task_group trees;
+      trees.run(grow_trees);
+      cells = grid_search.run(outcome, kGridBudget);
+      if (cells || outcome != detail::GridOutcome::resolution) stop_trees = true;
+      trees.wait();
+    } else {
+      cells = grid_search.run(outcome, kGridBudget);
+      if (!cells && outcome == detail::GridOutcome::resolution && !context.out_of_time()) grow_trees();
     }
     r.level = grid_search.level_reached();
-  }
-  // Phase 3: trees from both ends, until the time limit.
-  if (!found && outcome == detail::GridOutcome::resolution && !context.out_of_time()) {
-    const double goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
-    detail::TreeSearch trees(context, start, start_distance, goal_distance);
-    detail::TreeOutcome tree_outcome = detail::TreeOutcome::time_limit;
-    if (auto poses = trees.run(tree_outcome)) {
-      path = std::move(*poses);
+    if (cells) {
+      path = std::move(*cells);
       found = true;
-      r.level = kTreeLevel;
-    } else if (tree_outcome == detail::TreeOutcome::time_limit) {
-      outcome = detail::GridOutcome::time_limit;
-    } else if (tree_outcome == detail::TreeOutcome::budget) {
-      outcome = detail::GridOutcome::budget;
+    } else if (outcome == detail::GridOutcome::resolution) {
+      r.tree_nodes = tree_nodes;
+      if (tree_path) {
+        path = std::move(*tree_path);
+        found = true;
+        r.level = kTreeLevel;
+      } else if (tree_outcome == detail::TreeOutcome::time_limit) {
+        outcome = detail::GridOutcome::time_limit;
+      } else if (tree_outcome == detail::TreeOutcome::budget) {
+        outcome = detail::GridOutcome::budget;
+      }
     }
-    r.tree_nodes = trees.nodes();
   }
   const double t_search = context.elapsed_s();
   r.time_ms.search = t_search * 1e3;

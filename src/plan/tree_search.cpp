@@ -245,7 +245,7 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
   // Blocked: slide along the obstacles toward the target (retraction, Zhang & Manocha 2008).
   const std::size_t before = chain.size();
   TreeNode at = from;
-  for (int k = 0; k < kSlides && !context_.out_of_time(); ++k) {
+  for (int k = 0; k < kSlides && !stopped(); ++k) {
     std::optional<TreeNode> slid = slide(at, target, suspects);
     if (!slid) break;
     edges += slid->certified;
@@ -335,7 +335,7 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint6
 // slides), appending the nodes to `chain`; true when the leg's end is reached.
 bool TreeSearch::leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain,
                      std::size_t& edges, Suspects& suspects) const {
-  for (int k = 0; k < kConnectSteps && !context_.out_of_time(); ++k) {
+  for (int k = 0; k < kConnectSteps && !stopped(); ++k) {
     bool reached = false;
     std::optional<TreeNode> next = step_toward(at, leg, reached, suspects);
     if (!next) return reached;
@@ -396,7 +396,7 @@ void TreeSearch::reach_for(int grow, Attempt& out, int max_steps, Suspects& susp
   if (other.empty()) return;
   std::int32_t parent = nearest(other, grown.pose);
   TreeNode at = other[parent];
-  for (int k = 0; k < max_steps && !context_.out_of_time(); ++k) {
+  for (int k = 0; k < max_steps && !stopped(); ++k) {
     const std::size_t before = out.chain.size();
     const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges, suspects);
     if (reached) {
@@ -565,9 +565,13 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
       outcome = TreeOutcome::budget;
       return std::nullopt;
     }
+    if (cancel_ && cancel_->load()) {
+      outcome = TreeOutcome::cancelled;
+      return std::nullopt;
+    }
     if (context_.options.progress && context_.elapsed_s() - last_progress_s >= 1.0) {
       last_progress_s = context_.elapsed_s();
-      context_.options.progress({kTreeLevel, nodes(), context_.check.distance_queries(), last_progress_s});
+      context_.report({kTreeLevel, nodes(), context_.check.distance_queries(), last_progress_s});
     }
     const int grow = trees_[1].empty() ? 0 : static_cast<int>(round % 2);
     // The first rounds are half seeds (turn and pull from a root), in a fixed order.
@@ -595,6 +599,10 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
         attempts[i] = attempt(grow, targets[i], first + static_cast<std::uint64_t>(i - seeds));
       }
     });
+    if (cancel_ && cancel_->load()) {  // the round's attempts may have stopped short: not added
+      outcome = TreeOutcome::cancelled;
+      return std::nullopt;
+    }
     // Added in sample order: the same trees at any thread count. A path that joins the ends
     // has its lazy edges certified here, in order; the edges that fail are cut.
     for (Attempt& a : attempts) {

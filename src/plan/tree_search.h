@@ -19,6 +19,7 @@
 #include "plan_context.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -59,7 +60,7 @@ struct TreeNode {
 };
 
 /// How the tree phase ended without a path.
-enum class TreeOutcome { found, time_limit, budget, round_limit };
+enum class TreeOutcome { found, time_limit, budget, round_limit, cancelled };
 
 class TreeSearch {
  public:
@@ -71,6 +72,10 @@ class TreeSearch {
   /// reaches the goal region, the time is up, or `max_rounds` rounds have run. The path's poses, start
   /// first, goal pose (or a pose in the goal region) last.
   std::optional<std::vector<Pose>> run(TreeOutcome& outcome, std::uint64_t max_rounds = UINT64_MAX);
+
+  /// While `*cancel` is set (checked before each round), run() stops (outcome `cancelled`):
+  /// another phase has decided the plan.
+  void set_cancel(const std::atomic<bool>* cancel) { cancel_ = cancel; }
 
   /// Samples per round: fixed, so that the trees do not depend on the number of threads.
   static constexpr int kRound = 8;
@@ -154,6 +159,9 @@ class TreeSearch {
   /// Appends an attempt's chain to `tree`; the index of its last node.
   static std::int32_t append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain);
   bool inside(const Pose& pose) const;
+  /// Out of time, or cancelled: a step loop stops (the round's results are then not used,
+  /// or the search is over).
+  bool stopped() const { return context_.out_of_time() || (cancel_ && cancel_->load(std::memory_order_relaxed)); }
   /// A waypoint of the path through two trees' nodes, and the node whose `certified` flag is the
   /// motion from it to the next waypoint (none: the last waypoint, or where the trees meet).
   struct Waypoint {
@@ -190,6 +198,7 @@ class TreeSearch {
   std::array<std::array<std::optional<Turn>, 24>, 2> turns_;  ///< per tree and orientation, once computed
   std::uint64_t lazy_certified_ = 0, lazy_cut_ = 0, bridges_ = 0, bridges_tried_ = 0;
   int bridge_misses_ = 0;  ///< joins with an edge that no bridge cleared
+  const std::atomic<bool>* cancel_ = nullptr;
 };
 
 }  // namespace swept::detail

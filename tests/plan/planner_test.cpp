@@ -158,6 +158,42 @@ TEST(Planner, DeterministicAcrossRunsAndThreadCounts) {
   }
 }
 
+// The grid and the trees run at the same time on two cores or more (no query budget), in turn
+// otherwise; the plan must be the one the phases give in turn: the grid's path when it finds one
+// (the hooks at 1.2, solved on the grid at level 0 while the trees grow), else the trees' (the
+// twisty slot), with the trees unaffected by the grid beside them (the same nodes).
+TEST(Planner, GridAndTreesTogetherGiveThePlanOfThePhasesInTurn) {
+  for (const auto& g : {scenes::suite::hooks(1.2).problem, scenes::suite::twisty_slot().problem}) {
+    const PlanScene s = scene_of(g);
+    PlanOptions in_turn;  // one thread
+    in_turn.threads = 1;
+    PlanOptions together;
+    together.threads = 2;
+    PlanOptions budgeted;  // two threads, in turn: a budget never reached
+    budgeted.threads = 2;
+    budgeted.max_queries = 10'000'000;
+    std::vector<PlanResult> runs;
+    for (const PlanOptions& options : {in_turn, together, budgeted}) {
+      runs.push_back(plan(g.problem, s, options));
+      ASSERT_TRUE(runs.back().solved()) << g.name << ": " << runs.back().message;
+    }
+    if (g.name == "twisty-slot") {
+      EXPECT_EQ(runs[0].level, kTreeLevel) << "the slot's path must come from the trees";
+      EXPECT_GT(runs[0].tree_nodes, 2u);
+    } else {
+      EXPECT_EQ(runs[0].level, 0) << "the hooks' path must come from the grid";
+      EXPECT_EQ(runs[0].tree_nodes, 0u);
+    }
+    for (const PlanResult& r : runs) {
+      EXPECT_EQ(r.path_hash, runs[0].path_hash) << g.name;
+      EXPECT_EQ(r.level, runs[0].level) << g.name;
+      EXPECT_EQ(r.tree_nodes, runs[0].tree_nodes) << g.name;
+    }
+    // In turn, the count of queries is the same at any thread count.
+    EXPECT_EQ(runs[2].queries.distance, runs[0].queries.distance) << g.name;
+  }
+}
+
 // The query budget ends a search at a point that does not depend on threads or on the machine:
 // the house needs the trees and several thousand queries; stopped at 3,000 it must stop in the
 // same place at every thread count (same query count, same tree), with a time limit far away.

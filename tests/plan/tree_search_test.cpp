@@ -5,6 +5,7 @@
 
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -159,6 +160,34 @@ TEST(TreeSearch, ThreadsTheTubeOutOfTheCage) {
   }
   EXPECT_TRUE(threaded);
   check_path_independently(rig.scene, rig.problem(), Path{*path});
+}
+
+// Cancelled (the grid beside them has decided the plan), the trees stop before their next
+// round, or within a round without adding it. Raised before run(), no node grows; raised after
+// a few rounds, no round after it adds any.
+TEST(TreeSearch, StopsWhenCancelled) {
+  PhaseRig rig(scenes::suite::house().problem, 120.0);
+  const Pose start = rig.problem().start;
+  const double goal_distance = rig.start_distance(*rig.problem().goal);
+  std::atomic<bool> cancel{true};
+  detail::TreeSearch search(rig.context, start, rig.start_distance(start), goal_distance);
+  search.set_cancel(&cancel);
+  const std::size_t roots = search.nodes();
+  detail::TreeOutcome outcome = detail::TreeOutcome::found;
+  EXPECT_FALSE(search.run(outcome));
+  EXPECT_EQ(outcome, detail::TreeOutcome::cancelled);
+  EXPECT_EQ(search.nodes(), roots);
+  EXPECT_EQ(search.samples(), 0u);
+  // Not raised: three rounds grow the trees; raised then, the next run adds nothing.
+  cancel = false;
+  EXPECT_FALSE(search.run(outcome, 3));
+  EXPECT_EQ(outcome, detail::TreeOutcome::round_limit);
+  const std::size_t grown = search.nodes();
+  EXPECT_GT(grown, roots);
+  cancel = true;
+  EXPECT_FALSE(search.run(outcome));
+  EXPECT_EQ(outcome, detail::TreeOutcome::cancelled);
+  EXPECT_EQ(search.nodes(), grown);
 }
 
 TEST(TreeSearch, SameTreesAtAnyThreadCount) {
