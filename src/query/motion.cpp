@@ -134,6 +134,10 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
         out.status = MotionStatus::deadline;
         return out;
       }
+      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+        out.status = MotionStatus::cancelled;
+        return out;
+      }
       // Both halves are certified free once dm − m > length/2 − (min(d0, d1) − m) (positive
       // here, as the piece was not certified whole): the query need not be exact beyond that,
       // and stops sooner than it would at m + length/2. The pieces, and so the queries, are the

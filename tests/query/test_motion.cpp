@@ -336,6 +336,26 @@ TEST(CertifyMotion, BisectsEndBoundsDeadlineAndRadius) {
   c = certify_motion(along, plate, {.margin = 0.0, .deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1)});
   EXPECT_EQ(c.status, MotionStatus::deadline);
   EXPECT_EQ(c.distance_queries, 2 + 63);
+  // A cancel flag stops it before its next query: set beforehand, after the ends; set by the
+  // tenth query (as another thread would), right after it.
+  std::atomic<bool> cancel{true};
+  c = certify_motion(along, plate, {.margin = 0.0, .cancel = &cancel});
+  EXPECT_EQ(c.status, MotionStatus::cancelled);
+  EXPECT_FALSE(c.clear());
+  EXPECT_EQ(c.distance_queries, 2);
+  cancel = false;
+  int asked = 0;
+  auto plate_until_cancelled = [&](const Pose& pose, double enough) {
+    if (++asked == 10) cancel = true;
+    return plate(pose, enough);
+  };
+  c = certify_motion(along, plate_until_cancelled, {.margin = 0.0, .cancel = &cancel});
+  EXPECT_EQ(c.status, MotionStatus::cancelled);
+  EXPECT_EQ(c.distance_queries, 10);
+  // Unset, it changes nothing.
+  cancel = false;
+  c = certify_motion(toward, wall(2.0), {.margin = 0.0, .cancel = &cancel});
+  EXPECT_TRUE(c.clear());
 #if !SWEPT_ASSERTS_ENABLED
   // Without a radius the certificate refuses to answer (asserted when asserts are on).
   const Motion no_radius{Pose::identity(), Pose::from_axis_angle(Vec3::UnitZ(), 1.0, Vec3::Zero())};

@@ -6,6 +6,7 @@
 #include "swept/geometry/pose.h"
 #include "swept/query/query.h"
 
+#include <atomic>
 #include <chrono>
 #include <functional>
 #include <limits>
@@ -45,6 +46,7 @@ enum class MotionStatus {
   refused_cap,     ///< gave up: more bisection queries than the cap, or pieces shorter than the
                    ///< parameter resolution (1e-9): the motion grazes the margin
   deadline,        ///< gave up: the deadline passed
+  cancelled,       ///< gave up: the caller's cancel flag was set (CertificateOptions::cancel)
   invalid_motion,  ///< the motion's radius is not given or negative (a programmer error)
 };
 
@@ -69,6 +71,9 @@ struct CertificateOptions {
   int max_queries = kMaxCertificateQueries;  ///< cap on the bisection (midpoint) queries
   /// Past this time the certificate gives up (checked every 64 bisection queries).
   std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt;
+  /// Once this flag is set (by another thread, say, when the answer is no longer needed) the
+  /// certificate gives up before its next query (status `cancelled`). Not owned; null: never.
+  const std::atomic<bool>* cancel = nullptr;
   /// Known lower bounds on the distance at `from` / `to` (negative: unknown, queried).
   double from_bound = -1.0;
   double to_bound = -1.0;
