@@ -52,7 +52,7 @@ double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) 
 }
 
 Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
-                             int max_queries, bool paired) const {
+                             int max_queries, bool paired, const std::atomic<bool>* cancel) const {
   // Coherence: each query of the certificate starts from the previous one's closest pair on
   // its lane.
   std::array<DistanceHint, 2> hints;
@@ -61,7 +61,7 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
     if (d.hint.valid()) hints[lane] = d.hint;
     return d.distance;
   };
-  CertificateOptions options{.margin = margin_, .max_queries = max_queries, .deadline = deadline_,
+  CertificateOptions options{.margin = margin_, .max_queries = max_queries, .deadline = deadline_, .cancel = cancel,
                              .from_bound = da, .to_bound = db};
   // A translation that grazes the margin: the certificate's pieces shrink with the gap (a face
   // sliding along another at a hair above the margin needs thousands of them), while the sweep

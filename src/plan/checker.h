@@ -92,9 +92,10 @@ class Checker {
   /// is the default one; a lower `max_queries` is a caller's
   /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
   /// `paired`: two midpoints at a time, in parallel (`certify_motion_paired`), for callers
-  /// whose own work is serial.
+  /// whose own work is serial. `cancel`: CertificateOptions::cancel.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
-                      int max_queries = kMaxCertificateQueries, bool paired = false) const;
+                      int max_queries = kMaxCertificateQueries, bool paired = false,
+                      const std::atomic<bool>* cancel = nullptr) const;
   /// A cheap refusal before a long motion's certificate: true when one of the poses at
   /// t = 1/2, 1/4, 3/4, 1/8, …, 7/8 of the motion a → b (in that order, stopping at the first)
   /// is within the margin (`free`), so the certificate, which asks for more than the margin

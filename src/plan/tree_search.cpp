@@ -5,8 +5,11 @@
 #include "swept/geometry/assert.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -505,6 +508,47 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
   return all;
 }
 
+std::size_t TreeSearch::first_bridge(const std::vector<Waypoint>& way, std::size_t i,
+                                     const std::vector<std::pair<std::size_t, std::size_t>>& bridges, bool& stopped) {
+  // The candidates are handed out in order, one at a time, to as many workers as there are
+  // cores; a worker takes no candidate past the first success known. Every candidate before the
+  // first success is tried whatever the timing, so the bridge taken is the serial loop's: the
+  // same at any thread count. Under a query budget the count must not depend on the timing:
+  // one worker, which is that loop.
+  // A candidate still being tried when an earlier one succeeds is cancelled: its answer is no
+  // longer needed, and the join would otherwise wait for it.
+  const std::size_t n = bridges.size();
+  SWEPT_ASSERT(n <= kBridges.size(), "at most kBridges.size() bridges are tried round one motion");
+  std::array<std::atomic<bool>, kBridges.size()> cancel{};
+  std::atomic<std::size_t> next{0}, first{n};
+  std::atomic<std::uint64_t> tried{0};
+  std::atomic<bool> stop{false};  // the time is up, or the query budget spent
+  auto worker = [&] {
+    for (std::size_t k = next++; k < n && k < first.load() && !stop.load(); k = next++) {
+      const auto [back, ahead] = bridges[k];
+      const TreeNode& a = *way[i - back].node;
+      const TreeNode& b = *way[i + ahead].node;
+      ++tried;
+      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries, &cancel[k])) {
+        for (std::size_t f = first.load(); k < f && !first.compare_exchange_weak(f, k);) {
+        }
+        for (std::size_t later = k + 1; later < n; ++later) cancel[later] = true;
+      } else if (context_.out_of_time() || context_.over_budget()) {
+        stop = true;
+      }
+    }
+  };
+  const int workers = context_.options.max_queries ? 1 : std::min<int>(static_cast<int>(n), tbb::this_task_arena::max_concurrency());
+  tbb::task_group group;
+  for (int w = 1; w < workers; ++w) group.run(worker);
+  worker();
+  group.wait();
+  bridges_tried_ += tried;
+  context_.edges_checked += tried;
+  stopped = stop;
+  return first;
+}
+
 std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) {
   if (certify_path(tree_a, node_a, tree_b, node_b)) return path_through(tree_a, node_a, tree_b, node_b);
   if (context_.out_of_time() || context_.over_budget() || bridge_misses_ >= kBridgeMisses) return std::nullopt;
@@ -523,28 +567,21 @@ std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_
       kept.push_back(++i);
       continue;
     }
-    bool bridged = false;
-    for (const auto& [back, ahead] : kBridges) {
-      if (back > i - floor || i + ahead >= way.size()) continue;
-      const TreeNode& a = *way[i - back].node;
-      const TreeNode& b = *way[i + ahead].node;
-      ++context_.edges_checked;
-      ++bridges_tried_;
-      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries)) {
-        kept.resize(kept.size() - back);
-        i += ahead;
-        kept.push_back(i);
-        floor = i;
-        bridged = true;
-        ++bridges_;
-        break;
-      }
-      if (context_.out_of_time() || context_.over_budget()) return std::nullopt;
-    }
-    if (!bridged) {
-      ++bridge_misses_;
+    std::vector<std::pair<std::size_t, std::size_t>> bridges;
+    for (const auto& [back, ahead] : kBridges)
+      if (back <= i - floor && i + ahead < way.size()) bridges.emplace_back(back, ahead);
+    bool stopped = false;
+    const std::size_t first = first_bridge(way, i, bridges, stopped);
+    if (first == bridges.size()) {
+      if (!stopped) ++bridge_misses_;
       return std::nullopt;
     }
+    const auto [back, ahead] = bridges[first];
+    kept.resize(kept.size() - back);
+    i += ahead;
+    kept.push_back(i);
+    floor = i;
+    ++bridges_;
   }
   std::vector<Pose> path;
   path.reserve(kept.size());

@@ -181,6 +181,12 @@ class TreeSearch {
   /// kBridgeMisses joins have had an edge without one. Nullopt when an edge that failed has no
   /// bridge.
   std::optional<std::vector<Pose>> join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b);
+  /// The index of the first of `bridges` (back, ahead) round the failed motion (i, i+1) of
+  /// `way` that is certified, or bridges.size() when none is; `stopped` when the time limit or
+  /// the query budget cut the tries short. Tried on every core in order: the answer is the serial
+  /// loop's at any thread count.
+  std::size_t first_bridge(const std::vector<Waypoint>& way, std::size_t i,
+                           const std::vector<std::pair<std::size_t, std::size_t>>& bridges, bool& stopped);
   /// Marks dead the nodes of `tree` from index `first` on whose parent is dead.
   void propagate_dead(std::vector<TreeNode>& tree, std::size_t first);
   static bool alive_path(const std::vector<TreeNode>& tree, std::int32_t node);

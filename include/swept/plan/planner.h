@@ -73,7 +73,9 @@ struct PlanOptions {
   /// the same at any thread count — before each straight move, each expansion of the grid, each round of the
   /// trees, before each probe of the smoothing (which then keeps the path it has) — so an outcome
   /// decided by the budget is the same everywhere, unlike one decided by the time limit. The
-  /// search may pass the budget by what one round of the trees costs. None: no limit.
+  /// search may pass the budget by what one round of the trees costs. Under a budget nothing
+  /// runs ahead of the phases in turn (the trees beside the grid, the bridges' tries on every
+  /// core), so the count is the one-thread count. None: no limit.
   std::optional<std::uint64_t> max_queries;
   /// Threads for the parallel work (the final certification): plan() runs in a oneTBB task
   /// arena of this many (0: all cores; default: the problem's `threads`). Nothing process-wide
