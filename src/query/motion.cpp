@@ -134,7 +134,7 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
         out.status = MotionStatus::deadline;
         return out;
       }
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+      if (std::ranges::any_of(options.cancel, [](const std::atomic<bool>* c) { return c && c->load(std::memory_order_relaxed); })) {
         out.status = MotionStatus::cancelled;
         return out;
       }

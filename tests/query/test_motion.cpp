@@ -339,7 +339,7 @@ TEST(CertifyMotion, BisectsEndBoundsDeadlineAndRadius) {
   // A cancel flag stops it before its next query: set beforehand, after the ends; set by the
   // tenth query (as another thread would), right after it.
   std::atomic<bool> cancel{true};
-  c = certify_motion(along, plate, {.margin = 0.0, .cancel = &cancel});
+  c = certify_motion(along, plate, {.margin = 0.0, .cancel = {&cancel}});
   EXPECT_EQ(c.status, MotionStatus::cancelled);
   EXPECT_FALSE(c.clear());
   EXPECT_EQ(c.distance_queries, 2);
@@ -349,12 +349,23 @@ TEST(CertifyMotion, BisectsEndBoundsDeadlineAndRadius) {
     if (++asked == 10) cancel = true;
     return plate(pose, enough);
   };
-  c = certify_motion(along, plate_until_cancelled, {.margin = 0.0, .cancel = &cancel});
+  c = certify_motion(along, plate_until_cancelled, {.margin = 0.0, .cancel = {&cancel}});
   EXPECT_EQ(c.status, MotionStatus::cancelled);
   EXPECT_EQ(c.distance_queries, 10);
-  // Unset, it changes nothing.
+  // The second flag does the same (one can be the certificate's own, the other its search's).
   cancel = false;
-  c = certify_motion(toward, wall(2.0), {.margin = 0.0, .cancel = &cancel});
+  asked = 0;
+  std::atomic<bool> search_stopped{false};
+  auto plate_until_stopped = [&](const Pose& pose, double enough) {
+    if (++asked == 7) search_stopped = true;
+    return plate(pose, enough);
+  };
+  c = certify_motion(along, plate_until_stopped, {.margin = 0.0, .cancel = {&cancel, &search_stopped}});
+  EXPECT_EQ(c.status, MotionStatus::cancelled);
+  EXPECT_EQ(c.distance_queries, 7);
+  // Unset, they change nothing.
+  search_stopped = false;
+  c = certify_motion(toward, wall(2.0), {.margin = 0.0, .cancel = {&cancel, &search_stopped}});
   EXPECT_TRUE(c.clear());
 #if !SWEPT_ASSERTS_ENABLED
   // Without a radius the certificate refuses to answer (asserted when asserts are on).

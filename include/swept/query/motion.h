@@ -6,6 +6,7 @@
 #include "swept/geometry/pose.h"
 #include "swept/query/query.h"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -71,9 +72,10 @@ struct CertificateOptions {
   int max_queries = kMaxCertificateQueries;  ///< cap on the bisection (midpoint) queries
   /// Past this time the certificate gives up (checked every 64 bisection queries).
   std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt;
-  /// Once this flag is set (by another thread, say, when the answer is no longer needed) the
-  /// certificate gives up before its next query (status `cancelled`). Not owned; null: never.
-  const std::atomic<bool>* cancel = nullptr;
+  /// Once either flag is set (by another thread, say, when the answer is no longer needed) the
+  /// certificate gives up before its next query (status `cancelled`). Two, so that one can be
+  /// this certificate's own and the other its whole search's. Not owned; null: never.
+  std::array<const std::atomic<bool>*, 2> cancel{};
   /// Known lower bounds on the distance at `from` / `to` (negative: unknown, queried).
   double from_bound = -1.0;
   double to_bound = -1.0;
