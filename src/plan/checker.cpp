@@ -52,7 +52,7 @@ double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) 
 }
 
 Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
-                             int max_queries, bool paired, const std::atomic<bool>* cancel) const {
+                             int max_queries, bool paired, std::array<const std::atomic<bool>*, 2> cancel) const {
   // Coherence: each query of the certificate starts from the previous one's closest pair on
   // its lane.
   std::array<DistanceHint, 2> hints;

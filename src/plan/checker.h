@@ -95,7 +95,7 @@ class Checker {
   /// whose own work is serial. `cancel`: CertificateOptions::cancel.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
                       int max_queries = kMaxCertificateQueries, bool paired = false,
-                      const std::atomic<bool>* cancel = nullptr) const;
+                      std::array<const std::atomic<bool>*, 2> cancel = {}) const;
   /// A cheap refusal before a long motion's certificate: true when one of the poses at
   /// t = 1/2, 1/4, 3/4, 1/8, …, 7/8 of the motion a → b (in that order, stopping at the first)
   /// is within the margin (`free`), so the certificate, which asks for more than the margin

@@ -489,7 +489,8 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
     const std::vector<TreeNode>& tree = trees_[edges[k].tree];
     const TreeNode& child = tree[edges[k].node];
     const TreeNode& parent = tree[child.parent];
-    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance, false, kMaxCertificateQueries, /*paired=*/true).status;
+    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance, false, kMaxCertificateQueries,
+                                    /*paired=*/true, {cancel_, nullptr}).status;
   });
   bool all = true;
   for (const Edge& e : edges) {
@@ -500,7 +501,8 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
       child.certified = true;
     } else {
       all = false;
-      if (e.status == MotionStatus::deadline) continue;  // not known: the time is up anyway
+      // Not known: the time is up, or another phase has decided the plan; the search ends anyway.
+      if (e.status == MotionStatus::deadline || e.status == MotionStatus::cancelled) continue;
       child.dead = true;  // blocked, or too close to certify: cut
       ++lazy_cut_;
     }
@@ -532,11 +534,11 @@ std::size_t TreeSearch::first_bridge(const std::vector<Waypoint>& way, std::size
       const TreeNode& a = *way[i - back].node;
       const TreeNode& b = *way[i + ahead].node;
       ++tried;
-      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries, &cancel[k])) {
+      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries, {&cancel[k], cancel_})) {
         for (std::size_t f = first.load(); k < f && !first.compare_exchange_weak(f, k);) {
         }
         for (std::size_t later = k + 1; later < n; ++later) cancel[later] = true;
-      } else if (context_.out_of_time() || context_.over_budget()) {
+      } else if (context_.out_of_time() || context_.over_budget() || (cancel_ && cancel_->load())) {
         stop = true;
       }
     }
@@ -553,8 +555,9 @@ std::size_t TreeSearch::first_bridge(const std::vector<Waypoint>& way, std::size
 }
 
 std::optional<std::vector<Pose>> TreeSearch::join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) {
+  if (on_join_) on_join_();
   if (certify_path(tree_a, node_a, tree_b, node_b)) return path_through(tree_a, node_a, tree_b, node_b);
-  if (context_.out_of_time() || context_.over_budget() || bridge_misses_ >= kBridgeMisses) return std::nullopt;
+  if (stopped() || context_.over_budget() || bridge_misses_ >= kBridgeMisses) return std::nullopt;
   const std::vector<Waypoint> way = waypoints(tree_a, node_a, tree_b, node_b);
   auto clear = [&](std::size_t i) { return way[i].edge == nullptr || way[i].edge->certified; };
 
@@ -662,7 +665,7 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
             return path;
           }
         }
-        if (context_.out_of_time()) break;
+        if (stopped()) break;
         continue;
       }
       if (a.chain.empty() && !a.connected) continue;
@@ -674,7 +677,7 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
           outcome = TreeOutcome::found;
           return path;
         }
-        if (context_.out_of_time()) break;
+        if (stopped()) break;
       }
     }
   }

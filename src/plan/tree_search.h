@@ -21,6 +21,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -73,9 +74,12 @@ class TreeSearch {
   /// first, goal pose (or a pose in the goal region) last.
   std::optional<std::vector<Pose>> run(TreeOutcome& outcome, std::uint64_t max_rounds = UINT64_MAX);
 
-  /// While `*cancel` is set (checked before each round), run() stops (outcome `cancelled`):
-  /// another phase has decided the plan.
+  /// Once `*cancel` is set, run() stops (outcome `cancelled`): another phase has decided the
+  /// plan. Checked before each round, at each step, and by every certificate of a join (its
+  /// lazy edges and its bridges), so the trees stop within a query or two.
   void set_cancel(const std::atomic<bool>* cancel) { cancel_ = cancel; }
+  /// Called as each join begins, before its certificates (tests: to raise the cancel flag there).
+  void set_on_join(std::function<void()> on_join) { on_join_ = std::move(on_join); }
 
   /// Samples per round: fixed, so that the trees do not depend on the number of threads.
   static constexpr int kRound = 8;
@@ -182,8 +186,8 @@ class TreeSearch {
   /// bridge.
   std::optional<std::vector<Pose>> join(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b);
   /// The index of the first of `bridges` (back, ahead) round the failed motion (i, i+1) of
-  /// `way` that is certified, or bridges.size() when none is; `stopped` when the time limit or
-  /// the query budget cut the tries short. Tried on every core in order: the answer is the serial
+  /// `way` that is certified, or bridges.size() when none is; `stopped` when the time limit, the
+  /// query budget or the cancel flag (set_cancel) cut the tries short. Tried on every core in order: the answer is the serial
   /// loop's at any thread count.
   std::size_t first_bridge(const std::vector<Waypoint>& way, std::size_t i,
                            const std::vector<std::pair<std::size_t, std::size_t>>& bridges, bool& stopped);
@@ -205,6 +209,7 @@ class TreeSearch {
   std::uint64_t lazy_certified_ = 0, lazy_cut_ = 0, bridges_ = 0, bridges_tried_ = 0;
   int bridge_misses_ = 0;  ///< joins with an edge that no bridge cleared
   const std::atomic<bool>* cancel_ = nullptr;
+  std::function<void()> on_join_;
 };
 
 }  // namespace swept::detail

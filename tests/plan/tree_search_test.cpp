@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace swept {
 namespace {
@@ -188,6 +189,39 @@ TEST(TreeSearch, StopsWhenCancelled) {
   EXPECT_FALSE(search.run(outcome));
   EXPECT_EQ(outcome, detail::TreeOutcome::cancelled);
   EXPECT_EQ(search.nodes(), grown);
+}
+
+// Raised while the trees join (the grid or a straight move has found the plan meanwhile), the
+// cancel flag stops the join's certificates before their next query: the lazy edges and the
+// bridges of a joined path cost seconds on a large scene (the air cleaner's joins ran 40 ms past
+// the grid's path before they looked). Without it the house's first join makes queries.
+TEST(TreeSearch, CancelStopsAJoinBeforeItsNextQuery) {
+  for (bool raise : {false, true}) {
+    PhaseRig rig(scenes::suite::house().problem, 120.0);
+    rig.options.max_queries = 10'000'000;  // never reached: the bridges' tries in turn
+    const Pose start = rig.problem().start;
+    std::atomic<bool> cancel{false};
+    detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
+    search.set_cancel(&cancel);
+    std::optional<std::uint64_t> at_join;
+    search.set_on_join([&] {
+      if (at_join) return;
+      at_join = rig.check.distance_queries();
+      if (raise) cancel = true;
+    });
+    tbb::task_arena one(1);  // one join's certificates in turn: none in flight when the flag rises
+    detail::TreeOutcome outcome = detail::TreeOutcome::found;
+    const auto path = one.execute([&] { return search.run(outcome, 200); });
+    ASSERT_TRUE(at_join) << "the house's trees join within 200 rounds";
+    if (raise) {
+      EXPECT_FALSE(path);
+      EXPECT_EQ(outcome, detail::TreeOutcome::cancelled);
+      EXPECT_EQ(rig.check.distance_queries(), *at_join) << "no query after the flag";
+    } else {
+      EXPECT_GT(search.lazy_certified(), 0u);
+      EXPECT_GT(rig.check.distance_queries(), *at_join) << "the join certifies its lazy edges";
+    }
+  }
 }
 
 TEST(TreeSearch, SameTreesAtAnyThreadCount) {
