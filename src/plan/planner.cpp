@@ -39,12 +39,15 @@ using detail::Clock;
 using detail::PlanContext;
 
 // Expansions the grid's levels may spend without running out of nodes before the trees take
-// over. The axis-aligned narrow passages it is good at are solved within it (the box problems
-// and the hooks at level 0 in a few dozen expansions, where the trees take 0.7 s; the air-cleaner
-// within 150); larger budgets only hold the trees back (500 against 150: 5–20 % more search
-// time on the house, the cubicles, the bug trap, the twisty slot and the two larger scenes; 2000:
-// 0.1–3 s more), and 50 left the air-cleaner to the trees (2.9× slower). docs/bench-plan.md.
-constexpr std::size_t kGridBudget = 150;
+// over. The axis-aligned narrow passages it is good at are solved within it: the hooks at 1.1
+// and 1.2 at level 0 in 8 expansions (where the trees take 0.7 s), the air cleaner in 54 (the box
+// problems and the hooks at 1.5 are straight moves). On the rest of the suite and the scenes (the
+// house, the cubicles, the traps, the twisty slot, the spiral tube, the cylinder head, the tunnel
+// console) it finds nothing within any budget tried, and its expansions only keep a core from the
+// trees: 64 against 150 gives the same paths everywhere and the trees that core sooner. Larger
+// budgets held the trees back more (500 against 150: 5–20 % more search time; 2000: 0.1–3 s
+// more), and 50 left the air cleaner to the trees (2.9× slower). docs/bench-plan.md.
+constexpr std::size_t kGridBudget = 64;
 
 // Coordinates far beyond the scene lose the precision the distance bounds rely on (a query at
 // 1e100 visits every pair and takes seconds, so no time limit holds): the bounds, the start,
@@ -155,57 +158,67 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
     found = true;
     r.level = -1;
   }
-  if (!found) {
-    if (auto moves = detail::straight_moves(context, start, start_distance)) {
-      path = std::move(*moves);
-      found = true;
-      r.level = -1;
-    }
-  }
-  // Phases 2 and 3: the grid, with its budget, and the trees from both ends, until the time
-  // limit. The grid's path, when it finds one, is the plan; otherwise the trees'. With two cores
-  // or more and no query budget the trees grow while the grid searches (the grid's work is
-  // mostly serial: one core idles), and stop when the grid decides the plan; the trees do not
-  // depend on when they run, so the path is the one the phases give in turn, which they do at
-  // one thread, and under a query budget (whose count must not depend on the other phase).
+  // Phases 1–3: straight moves; the grid, with its budget; the trees from both ends, until the
+  // time limit. The first phase with a path gives the plan. With two cores or more and no query
+  // budget the trees do not wait for the others: they grow while the straight moves and then
+  // the grid search (whose work is mostly serial: one core idles), and stop — within the step
+  // they are at — once those have found a path or the grid has decided there is none. The trees
+  // do not depend on when they run, so the path is the one the phases give in turn, which they
+  // do at one thread, and under a query budget (whose count must not depend on another phase).
   detail::GridOutcome outcome = detail::GridOutcome::resolution;
-  if (!found && !context.out_of_time()) {
-    const double goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
+  if (!found) {
     std::atomic<bool> stop_trees{false};
     std::optional<std::vector<Pose>> tree_path;
     detail::TreeOutcome tree_outcome = detail::TreeOutcome::time_limit;
     std::size_t tree_nodes = 0;
+    std::optional<double> goal_distance;
     auto grow_trees = [&] {
-      detail::TreeSearch trees(context, start, start_distance, goal_distance);
+      detail::TreeSearch trees(context, start, start_distance, *goal_distance);
       trees.set_cancel(&stop_trees);
       tree_path = trees.run(tree_outcome);
       tree_nodes = trees.nodes();
     };
-    std::optional<std::vector<Pose>> cells;
-    if (!options.max_queries && tbb::this_task_arena::max_concurrency() >= 2) {
-      tbb::task_group trees;
-      trees.run(grow_trees);
-      cells = grid_search.run(outcome, kGridBudget);
-      if (cells || outcome != detail::GridOutcome::resolution) stop_trees = true;
-      trees.wait();
-    } else {
-      cells = grid_search.run(outcome, kGridBudget);
-      if (!cells && outcome == detail::GridOutcome::resolution && !context.out_of_time()) grow_trees();
+    const bool beside = !options.max_queries && tbb::this_task_arena::max_concurrency() >= 2;
+    tbb::task_group beside_trees;
+    if (beside) {
+      goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
+      beside_trees.run(grow_trees);
     }
-    r.level = grid_search.level_reached();
-    if (cells) {
-      path = std::move(*cells);
-      found = true;
-    } else if (outcome == detail::GridOutcome::resolution) {
-      r.tree_nodes = tree_nodes;
-      if (tree_path) {
-        path = std::move(*tree_path);
+    // Isolated: while this thread waits inside the straight moves' or the grid's parallel work,
+    // it takes no task of the trees beside them (it would have to finish it before going on).
+    std::optional<std::vector<Pose>> cells;
+    tbb::this_task_arena::isolate([&] {
+      if (auto moves = detail::straight_moves(context, start, start_distance)) {
+        path = std::move(*moves);
         found = true;
-        r.level = kTreeLevel;
-      } else if (tree_outcome == detail::TreeOutcome::time_limit) {
-        outcome = detail::GridOutcome::time_limit;
-      } else if (tree_outcome == detail::TreeOutcome::budget) {
-        outcome = detail::GridOutcome::budget;
+        r.level = -1;
+      }
+      if (!found && !context.out_of_time()) cells = grid_search.run(outcome, kGridBudget);
+    });
+    const bool trees_needed = !found && !cells && outcome == detail::GridOutcome::resolution;
+    if (beside) {
+      if (!trees_needed) stop_trees = true;
+      beside_trees.wait();
+    } else if (trees_needed && !context.out_of_time()) {
+      goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
+      grow_trees();
+    }
+    if (!found) {  // else straight moves gave the path: the grid's and the trees' are not used
+      r.level = grid_search.level_reached();
+      if (cells) {
+        path = std::move(*cells);
+        found = true;
+      } else if (outcome == detail::GridOutcome::resolution) {
+        r.tree_nodes = tree_nodes;
+        if (tree_path) {
+          path = std::move(*tree_path);
+          found = true;
+          r.level = kTreeLevel;
+        } else if (tree_outcome == detail::TreeOutcome::time_limit) {
+          outcome = detail::GridOutcome::time_limit;
+        } else if (tree_outcome == detail::TreeOutcome::budget) {
+          outcome = detail::GridOutcome::budget;
+        }
       }
     }
   }
