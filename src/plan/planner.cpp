@@ -161,10 +161,11 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
   // Phases 1–3: straight moves; the grid, with its budget; the trees from both ends, until the
   // time limit. The first phase with a path gives the plan. With two cores or more and no query
   // budget the trees do not wait for the others: they grow while the straight moves and then
-  // the grid search (whose work is mostly serial: one core idles), and stop — within the step
-  // they are at — once those have found a path or the grid has decided there is none. The trees
-  // do not depend on when they run, so the path is the one the phases give in turn, which they
-  // do at one thread, and under a query budget (whose count must not depend on another phase).
+  // the grid search (whose work is mostly serial: one core idles), and stop — within the query
+  // they are at, a join's included — once those have found a path or the grid has decided there
+  // is none. The trees do not depend on when they run, so the path is the one the phases give
+  // in turn, which they do at one thread, and under a query budget (whose count must not depend
+  // on another phase).
   detail::GridOutcome outcome = detail::GridOutcome::resolution;
   if (!found) {
     std::atomic<bool> stop_trees{false};
