@@ -52,7 +52,7 @@ double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) 
 }
 
 Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
-                             int max_queries, bool paired, std::array<const std::atomic<bool>*, 2> cancel) const {
+                             int max_queries, Pieces pieces, std::array<const std::atomic<bool>*, 2> cancel) const {
   // Coherence: each query of the certificate starts from the previous one's closest pair on
   // its lane.
   std::array<DistanceHint, 2> hints;
@@ -62,7 +62,8 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
     return d.distance;
   };
   CertificateOptions options{.margin = margin_, .max_queries = max_queries, .deadline = deadline_, .cancel = cancel,
-                             .from_bound = da, .to_bound = db};
+                             .from_bound = da, .to_bound = db,
+                             .from_both_ends = pieces == Pieces::earliest_and_latest};
   // A translation that grazes the margin: the certificate's pieces shrink with the gap (a face
   // sliding along another at a hair above the margin needs thousands of them), while the sweep
   // bounds each node pair once for the whole motion. Short of that, the certificate is cheaper
@@ -85,8 +86,8 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
       return s->clear;
     };
   }
-  const Certificate c = paired ? certify_motion_paired(m, bound, options)
-                               : certify_motion(m, [&](const Pose& pose, double enough) { return bound(pose, enough, 0); }, options);
+  const Certificate c = pieces != Pieces::one ? certify_motion_paired(m, bound, options)
+                                              : certify_motion(m, [&](const Pose& pose, double enough) { return bound(pose, enough, 0); }, options);
   if (c.status == MotionStatus::refused_cap && max_queries == kMaxCertificateQueries) ++cap_refusals_;
   return c;
 }

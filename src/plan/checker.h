@@ -36,6 +36,14 @@ struct Suspects {
   }
 };
 
+/// How a motion certificate asks for its midpoints (Checker::certify).
+enum class Pieces {
+  one,                  ///< one at a time (`certify_motion`): for callers that run in parallel
+  two_earliest,         ///< two at a time, in parallel (`certify_motion_paired`): serial callers
+  earliest_and_latest,  ///< two at a time, one from each end (`from_both_ends`): a long motion
+                        ///< likely blocked near its end, as a bridge round a failed edge
+};
+
 // Distance bounds and motion certificates against the obstacles, with query counters. In
 // `relaxed` mode (the escape from a start in contact) the triangle pairs that were closer than
 // clearance + contact tolerance at the start are left out, pair by pair; every other pair of
@@ -91,10 +99,9 @@ class Checker {
   /// where it is blocked. Refusals for the query cap are counted (`cap_refusals`) when the cap
   /// is the default one; a lower `max_queries` is a caller's
   /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
-  /// `paired`: two midpoints at a time, in parallel (`certify_motion_paired`), for callers
-  /// whose own work is serial. `cancel`: CertificateOptions::cancel.
+  /// `pieces`: how the midpoints are asked (Pieces). `cancel`: CertificateOptions::cancel.
   Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
-                      int max_queries = kMaxCertificateQueries, bool paired = false,
+                      int max_queries = kMaxCertificateQueries, Pieces pieces = Pieces::one,
                       std::array<const std::atomic<bool>*, 2> cancel = {}) const;
   /// A cheap refusal before a long motion's certificate: true when one of the poses at
   /// t = 1/2, 1/4, 3/4, 1/8, …, 7/8 of the motion a → b (in that order, stopping at the first)

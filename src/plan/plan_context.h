@@ -55,12 +55,12 @@ struct PlanContext {
   }
   /// Certifies the motion a → b (ends' bounds da, db; negative: unknown), counting it; with
   /// `max_queries`, a motion that needs more bisection queries is not clear (Checker::certify).
-  /// Two midpoints at a time (the phases that call it are serial). `cancel`: once either is set, the
-  /// certificate gives up (not clear).
+  /// Two midpoints at a time (the phases that call it are serial), the two earliest unless
+  /// `pieces` says otherwise. `cancel`: once either is set, the certificate gives up (not clear).
   bool certify(const Pose& a, double da, const Pose& b, double db, int max_queries = kMaxCertificateQueries,
-               std::array<const std::atomic<bool>*, 2> cancel = {}) {
+               std::array<const std::atomic<bool>*, 2> cancel = {}, Pieces pieces = Pieces::two_earliest) {
     ++edges_checked;
-    return check.certify(a, da, b, db, false, max_queries, /*paired=*/true, cancel).clear();
+    return check.certify(a, da, b, db, false, max_queries, pieces, cancel).clear();
   }
 };
 

@@ -490,7 +490,7 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
     const TreeNode& child = tree[edges[k].node];
     const TreeNode& parent = tree[child.parent];
     edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance, false, kMaxCertificateQueries,
-                                    /*paired=*/true, {cancel_, nullptr}).status;
+                                    Pieces::two_earliest, {cancel_, nullptr}).status;
   });
   bool all = true;
   for (const Edge& e : edges) {
@@ -534,7 +534,8 @@ std::size_t TreeSearch::first_bridge(const std::vector<Waypoint>& way, std::size
       const TreeNode& a = *way[i - back].node;
       const TreeNode& b = *way[i + ahead].node;
       ++tried;
-      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries, {&cancel[k], cancel_})) {
+      if (context_.certify(a.pose, a.distance, b.pose, b.distance, kBridgeQueries, {&cancel[k], cancel_},
+                             Pieces::earliest_and_latest)) {
         for (std::size_t f = first.load(); k < f && !first.compare_exchange_weak(f, k);) {
         }
         for (std::size_t later = k + 1; later < n; ++later) cancel[later] = true;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <vector>
 
 namespace swept {
@@ -105,15 +106,20 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
     Piece piece;
     double tm, enough, dm;
   };
-  std::vector<Piece> stack{{0.0, d0, 1.0, d1}};  // depth first, earliest piece on top
+  // Depth first, in the order of the motion: the earliest piece at the front. Pieces are taken
+  // from the front, and with `from_both_ends` the second of a pair from the back.
+  std::deque<Piece> stack{{0.0, d0, 1.0, d1}};
   std::array<Ask, 2> asks{};
+  std::array<bool, 2> from_back{};
   int bisections = 0;
   while (!stack.empty()) {
     // The earliest `width` pieces not certified whole.
     int n = 0;
     while (n < width && !stack.empty()) {
-      const Piece p = stack.back();
-      stack.pop_back();
+      const bool back = n == 1 && options.from_both_ends;
+      const Piece p = back ? stack.back() : stack.front();
+      if (back) stack.pop_back();
+      else stack.pop_front();
       const double length = total * (p.t1 - p.t0);
       if (length < (p.d0 - m) + (p.d1 - m)) continue;  // certified free
       // Too many pieces, or pieces too short to split, mean the motion grazes the margin:
@@ -144,6 +150,7 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
       // same.
       const double short_end = std::min(p.d0, p.d1) - m;
       const double need = 0.5 * length - std::max(0.0, short_end);
+      from_back[n] = back;
       asks[n++] = {p, 0.5 * (p.t0 + p.t1), m + need * (1.0 + 1e-9) + 1e-300, 0.0};
     }
     if (n == 0) break;
@@ -155,8 +162,13 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
       if (asks[k].dm <= m) return blocked(asks[k].tm, asks[k].dm);
     for (int k = n - 1; k >= 0; --k) {
       const Ask& a = asks[k];
-      stack.push_back({a.tm, a.dm, a.piece.t1, a.piece.d1});
-      stack.push_back({a.piece.t0, a.piece.d0, a.tm, a.dm});
+      if (from_back[k]) {
+        stack.push_back({a.piece.t0, a.piece.d0, a.tm, a.dm});
+        stack.push_back({a.tm, a.dm, a.piece.t1, a.piece.d1});
+      } else {
+        stack.push_front({a.tm, a.dm, a.piece.t1, a.piece.d1});
+        stack.push_front({a.piece.t0, a.piece.d0, a.tm, a.dm});
+      }
     }
   }
   out.status = MotionStatus::clear;

@@ -86,6 +86,11 @@ struct CertificateOptions {
   /// where the motion is blocked. Empty: never asked.
   std::function<bool(double smallest)> decide;
   int decide_after = kSweepAfterQueries;
+  /// For `certify_motion_paired`: the two pieces asked at once are the earliest and the latest
+  /// not yet certified, instead of the two earliest. A motion blocked near its end is found
+  /// blocked without certifying all that comes before (a long bridge round a failed edge); a
+  /// free motion is cut into the same pieces when the distances returned are the same.
+  bool from_both_ends = false;
 };
 
 struct Certificate {
@@ -125,7 +130,8 @@ Certificate certify_motion(const Motion& motion, const DistanceBound& distance_a
 /// `certify_motion` when the distances returned are the same, so it takes the same queries in
 /// about half the time on two cores; a blocked one stops at the first blocked midpoint in this
 /// order (the earlier of the two when both block), which may be another one than
-/// `certify_motion` finds. For callers whose own work leaves a core idle (the planner's
+/// `certify_motion` finds. With `from_both_ends` lane 1 works from the motion's end backwards
+/// instead. For callers whose own work leaves a core idle (the planner's
 /// shortcuts, straight moves, grid edges, a joined path's lazy edges and the final check).
 Certificate certify_motion_paired(const Motion& motion, const LaneDistanceBound& distance_at,
                                   const CertificateOptions& options);
