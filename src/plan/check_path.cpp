@@ -95,7 +95,8 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     // margin), or t = −1 when it gave up (query cap, parameter resolution).
     double t_blocked = -1.0, distance_at_block = 0.0;
     auto certify = [&](double da, double db, bool relaxed) {
-      const Certificate c = check.certify(poses[i], da, poses[i + 1], db, relaxed, kMaxCertificateQueries, detail::Pieces::two_earliest);
+      const Certificate c = check.certify(poses[i], da, poses[i + 1], db, relaxed, kMaxCertificateQueries,
+                                          detail::Pieces::two_earliest);
       if (c.status == MotionStatus::blocked) t_blocked = c.t_blocked, distance_at_block = c.distance_at_block;
       return c.clear();
     };

@@ -86,8 +86,9 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
       return s->clear;
     };
   }
-  const Certificate c = pieces != Pieces::one ? certify_motion_paired(m, bound, options)
-                                              : certify_motion(m, [&](const Pose& pose, double enough) { return bound(pose, enough, 0); }, options);
+  auto one_lane = [&](const Pose& pose, double enough) { return bound(pose, enough, 0); };
+  const Certificate c = pieces == Pieces::one ? certify_motion(m, one_lane, options)
+                                              : certify_motion_paired(m, bound, options);
   if (c.status == MotionStatus::refused_cap && max_queries == kMaxCertificateQueries) ++cap_refusals_;
   return c;
 }

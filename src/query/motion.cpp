@@ -105,15 +105,16 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
   struct Ask {
     Piece piece;
     double tm, enough, dm;
+    bool from_back;  ///< taken from the back of the stack (`from_both_ends`); its halves go back there
   };
   // Depth first, in the order of the motion: the earliest piece at the front. Pieces are taken
   // from the front, and with `from_both_ends` the second of a pair from the back.
   std::deque<Piece> stack{{0.0, d0, 1.0, d1}};
   std::array<Ask, 2> asks{};
-  std::array<bool, 2> from_back{};
   int bisections = 0;
   while (!stack.empty()) {
-    // The earliest `width` pieces not certified whole.
+    // The earliest `width` pieces not certified whole (with `from_both_ends`: the earliest and
+    // the latest).
     int n = 0;
     while (n < width && !stack.empty()) {
       const bool back = n == 1 && options.from_both_ends;
@@ -150,8 +151,7 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
       // same.
       const double short_end = std::min(p.d0, p.d1) - m;
       const double need = 0.5 * length - std::max(0.0, short_end);
-      from_back[n] = back;
-      asks[n++] = {p, 0.5 * (p.t0 + p.t1), m + need * (1.0 + 1e-9) + 1e-300, 0.0};
+      asks[n++] = {p, 0.5 * (p.t0 + p.t1), m + need * (1.0 + 1e-9) + 1e-300, 0.0, back};
     }
     if (n == 0) break;
     auto ask = [&](int k) { asks[k].dm = distance_at(motion.at(asks[k].tm), asks[k].enough, k); };
@@ -162,7 +162,7 @@ Certificate certify(const Motion& motion, const LaneDistanceBound& distance_at, 
       if (asks[k].dm <= m) return blocked(asks[k].tm, asks[k].dm);
     for (int k = n - 1; k >= 0; --k) {
       const Ask& a = asks[k];
-      if (from_back[k]) {
+      if (a.from_back) {
         stack.push_back({a.piece.t0, a.piece.d0, a.tm, a.dm});
         stack.push_back({a.tm, a.dm, a.piece.t1, a.piece.d1});
       } else {
