@@ -325,7 +325,7 @@ TEST(TreeSearch, AnExternalBodyThroughTheHouseIsBridgedAndCheckedIndependently) 
   // as `file_unit = "cm"` reads it), carried through the suite's house. Its path comes from the
   // trees, with failed lazy edges bridged (the fourth and second links need no bridge); it must
   // be the same at 1 and 2 threads and pass the oracle that shares no code with swept (checked
-  // once: the two paths are one).
+  // once: the two paths are one; in the release suite only, the sanitizers still run the search).
   const auto data = shared_data();
   if (!data) GTEST_SKIP() << "shared CAD data folder is absent";
   const auto file = *data / "ros_industrial" / "kuka_kr10r1420_visual_link_3.stl";
@@ -348,7 +348,9 @@ TEST(TreeSearch, AnExternalBodyThroughTheHouseIsBridgedAndCheckedIndependently) 
     tbb::task_arena arena(threads);
     const auto path = arena.execute([&] { return search.run(outcome); });
     ASSERT_TRUE(path) << search.nodes() << " nodes";
+#if !defined(__SANITIZE_ADDRESS__)  // the oracle on 9,689 × 336 triangles: 15 s here, 6 min under ASan
     if (threads == 1) check_path_independently(rig.scene, rig.problem(), Path{*path});
+#endif
     hashes.push_back(path_hash(Path{*path}));
     bridges.push_back(search.bridges());
     tried.push_back(search.bridges_tried());
