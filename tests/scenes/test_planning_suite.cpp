@@ -11,6 +11,7 @@
 #include "swept/scenes/scenes.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -210,6 +211,53 @@ TEST_P(SuiteTest, WitnessPathIsCertified) {
 
   const PathCheckResult straight = check_path(*problem, *scene, Path{{problem->start, *problem->goal}});
   EXPECT_FALSE(straight.valid) << "the straight start-goal motion is free";
+}
+
+// check_path (the planner's final certification, and `swept check`) gives on two cores what it
+// gives on one, field by field, for the witness and for the straight start → goal motion (free
+// ends, a collision or a graze between them: a failing certificate). And each segment's smallest
+// distance is the exact distance at the pose it names, by the oracle's brute force.
+TEST_P(SuiteTest, CheckPathIsTheSameOnOneAndTwoCoresAndItsMinimaAreExact) {
+  const Written& w = written(GetParam());
+  auto problem = load_problem(w.files.problem_toml);
+  ASSERT_TRUE(problem) << problem.error().message;
+  auto scene = load_scene(*problem, problem->build);
+  ASSERT_TRUE(scene) << scene.error().message;
+  const auto obstacles = oracle_tris(scene->obstacles.triangles);
+  const Path straight{{problem->start, *problem->goal}};
+  for (const Path& path : {Path{w.files.witness_poses}, straight}) {
+    tbb::task_arena one(1), two(2);
+    const PathCheckResult a = one.execute([&] { return check_path(*problem, *scene, path); });
+    const PathCheckResult b = two.execute([&] { return check_path(*problem, *scene, path); });
+    EXPECT_EQ(a.valid, b.valid);
+    EXPECT_EQ(a.message, b.message);
+    EXPECT_EQ(a.min_clearance, b.min_clearance);
+    EXPECT_EQ(a.min_segment, b.min_segment);
+    EXPECT_EQ(a.min_t, b.min_t);
+    EXPECT_EQ(a.first_bad_segment, b.first_bad_segment);
+    EXPECT_EQ(a.first_bad_distance, b.first_bad_distance);
+    if (a.valid) {
+      EXPECT_EQ(a.distance_queries, b.distance_queries);
+    }
+    ASSERT_EQ(a.segments.size(), path.poses.size() - 1);
+    ASSERT_EQ(b.segments.size(), a.segments.size());
+    for (std::size_t i = 0; i < a.segments.size(); ++i) {
+      const SegmentCheck &sa = a.segments[i], &sb = b.segments[i];
+      EXPECT_EQ(sa.certified, sb.certified) << "segment " << i;
+      EXPECT_EQ(sa.min_distance, sb.min_distance) << "segment " << i;
+      EXPECT_EQ(sa.t_min, sb.t_min) << "segment " << i;
+      EXPECT_EQ(sa.t_blocked, sb.t_blocked) << "segment " << i;
+      EXPECT_EQ(sa.distance_at_block, sb.distance_at_block) << "segment " << i;
+      const oracle::RigidPose at =
+          oracle::interpolate_pose({path.poses[i].rotation, path.poses[i].translation},
+                                   {path.poses[i + 1].rotation, path.poses[i + 1].translation}, sa.t_min, scene->reference);
+      const double d = oracle::exact_distance(obstacles, oracle_tris(scene->body.triangles, Pose{at.R, at.t}));
+      EXPECT_NEAR(sa.min_distance, d, 1e-9 * (1.0 + d)) << "segment " << i << " at t = " << sa.t_min;
+    }
+  }
+  const PathCheckResult s = check_path(*problem, *scene, straight);
+  EXPECT_FALSE(s.valid);
+  EXPECT_FALSE(s.segments.front().certified);
 }
 
 TEST_P(SuiteTest, SameBytesEveryTime) {
