@@ -49,6 +49,7 @@ using namespace swept::bench;
             << "  --swept-time-limit S  swept's limit on the suite's hard problems (bug-trap, hooks-*; default 300 s; "
                "OMPL keeps --time-limit)\n"
             << "  --thread-check one more swept run at 1 thread per solved problem: the path hash must not change\n"
+            << "                 (its time is printed, and how many times swept's median it is: what the other cores gave)\n"
             << "  --threads N    swept's threads (0: all cores; default 0)\n"
             << "  --only a,b     only these problems (peg_in_hole, t_slot, l_tunnel, bar_through_slot, enclosed, "
                "air-cleaner, cylinder-head, tunnel-console, or the --suite ompl names)\n"

@@ -71,6 +71,22 @@ TEST(PlanCompareJson, RowsReadBack) {
   EXPECT_EQ(back[1].verdict(), "not run");
 }
 
+TEST(PlanCompareJson, TheRunAtOneThreadIsPrintedWithItsShareOfTheMedian) {
+  CompareRow r = row();
+  r.one_thread_status = r.main().result.status;
+  r.one_thread_hash = r.main().result.path_hash;
+  r.one_thread_ms = 23.0;  // the median of 11 and 12 is 11.5: 23 / 11.5 = 2
+  testing::internal::CaptureStdout();
+  print_tables({r}, {.time_limit = 10, .seeds = 3, .threads = 2});
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_NE(out.find("1 thread: yes (23.0 ms, 2.00x the median)"), std::string::npos) << out;
+
+  r.one_thread_hash += 1;  // another path at one thread
+  testing::internal::CaptureStdout();
+  print_tables({r}, {.time_limit = 10, .seeds = 3, .threads = 2});
+  EXPECT_NE(testing::internal::GetCapturedStdout().find("1 thread: NO (23.0 ms"), std::string::npos);
+}
+
 TEST(PlanCompareJson, StatusWordsReadBack) {
   for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_budget, PlanStatus::no_path_bounds,
                              PlanStatus::no_path_resolution, PlanStatus::invalid_start, PlanStatus::invalid_goal,

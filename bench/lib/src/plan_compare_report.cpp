@@ -56,7 +56,7 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
   std::printf("\nswept per fitter (plan ms of the first run without the tree build; build ms; status) and determinism\n");
   std::printf("%-18s", "problem");
   for (const FitterInfo& f : all_fitters()) std::printf(" %28s", std::string(f.name).c_str());
-  std::printf("  %s\n", "same hash every run (and at 1 thread); check_path of the path");
+  std::printf("  %s\n", "same hash every run (and at 1 thread: its time, and how many times the median); check_path of the path");
   for (const CompareRow& r : rows) {
     if (!r.error.empty()) continue;
     std::printf("%-18s", r.name.c_str());
@@ -68,9 +68,14 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     }
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(r.main().result.path_hash));
-    const char* one = !r.one_thread_status ? "" : r.one_thread_same() ? ", 1 thread: yes" : ", 1 thread: NO";
+    // The run at 1 thread's time over the median: how much the other cores gave this run (a
+    // machine whose second core is taken by something else gives less, and the ratio drops).
+    std::string one;
+    if (r.one_thread_status)
+      one = std::string(r.one_thread_same() ? ", 1 thread: yes" : ", 1 thread: NO") + " (" + fmt(r.one_thread_ms) + " ms, " +
+            fmt(r.one_thread_ms / std::max(r.swept_median(), 1e-9), 2) + "x the median)";
     const char* check = !r.path_checked ? "" : *r.path_checked ? "; check: valid" : "; check: NOT VALID";
-    std::printf("  %s (%s)%s%s\n", r.deterministic ? "yes" : "NO", hash, one, check);
+    std::printf("  %s (%s)%s%s\n", r.deterministic ? "yes" : "NO", hash, one.c_str(), check);
   }
   std::fflush(stdout);
 }
