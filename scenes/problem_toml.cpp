@@ -88,6 +88,7 @@ std::string problem_toml(const Problem& p, std::string_view comment) {
        "\ntime_limit = " + num(p.time_limit) + "\nthreads = " + std::to_string(p.threads) + "\n";
   if (p.deflection != Problem{}.deflection) s += "deflection = " + num(p.deflection) + "\n";
   if (p.max_triangles != Problem{}.max_triangles) s += "max_triangles = " + std::to_string(p.max_triangles) + "\n";
+  if (p.seed != 0) s += "seed = " + std::to_string(p.seed) + "\n";
   return s;
 }
 

@@ -10,7 +10,9 @@
 #include <ctime>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -23,6 +25,7 @@ struct PlanCliOptions {
   double time_limit = 0.0;
   std::uint64_t max_queries = 0;
   int threads = -1;
+  std::optional<std::uint64_t> seed;
   std::string output;
   std::string view;
   bool json = false;
@@ -41,6 +44,7 @@ void run(const PlanCliOptions& o) {
   if (!o.fitter.empty()) problem->build.fitter = fitters_from(o.fitter, false).front();
   if (o.time_limit > 0) problem->time_limit = o.time_limit;
   if (o.threads >= 0) problem->threads = o.threads;
+  if (o.seed) problem->seed = *o.seed;
 
   auto scene = load_scene(*problem, problem->build);
   if (!scene) throw std::runtime_error(scene.error().message);
@@ -102,6 +106,7 @@ void run(const PlanCliOptions& o) {
                      {"cpu", cpu}}},
         {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}, {"sweep", r.queries.sweep}}},
         {"path_hash", hex(r.path_hash)},
+        {"seed", problem->seed},
         {"unit", problem->unit},
         {"fitter", std::string(to_string(problem->build.fitter))},
         {"split", std::string(to_string(problem->build.split))},
@@ -125,7 +130,8 @@ void run(const PlanCliOptions& o) {
         std::cout << "escape       first segment: " << r.exempt_pairs
                   << " triangle pairs in contact at the start exempt, every other pair min " << r.escape_clearance
                   << " " << problem->unit << "\n";
-      std::cout << "path hash    " << hex(r.path_hash) << "\n";
+      std::cout << "path hash    " << hex(r.path_hash) << (problem->seed != 0 ? " (seed " + std::to_string(problem->seed) + ")" : "")
+                << "\n";
       if (!o.output.empty()) std::cout << "written      " << o.output << "\n";
     }
     std::cout << std::setprecision(4) << "time         build " << r.time_ms.build << " ms, search " << r.time_ms.search
@@ -159,6 +165,19 @@ void add_plan_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--threads", o->threads, "Override the thread count (0: all cores); the same path at any count (tested: 1, 2, 4, 8)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", o->seed,
+                  "Which draw of the trees' sample sequence (default: the problem's planner.seed, else 0): another "
+                  "seed, another path and time where the trees solve it; the same path for the same seed at any "
+                  "thread count")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            // As planner.seed in a problem file (a TOML integer): 0 to 2^63 − 1.
+            const bool digits = !v.empty() && v.size() <= 19 && v.find_first_not_of("0123456789") == std::string::npos;
+            if (!digits || std::stoull(v) > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
+              return "must be a whole number from 0 to " + std::to_string(std::numeric_limits<std::int64_t>::max()) + ", got " + v;
+            return {};
+          },
+          "SEED"));
   cmd->add_option("-o,--output", o->output, "Write the path: OMPL .path when the name ends in .path, else JSON");
   cmd->add_option("--view", o->view, "Also write a self-contained HTML viewer of the path");
   cmd->add_flag("--json", o->json, "Print one JSON document with the result and statistics");

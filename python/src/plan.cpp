@@ -82,9 +82,15 @@ PyBvh scene_tree(const PyScene& s, const Bvh& t) {
   return b;
 }
 
+void set_seed(Problem& problem, std::int64_t seed) {
+  if (seed < 0) throw InputError("seed must be >= 0, not " + std::to_string(seed));
+  problem.seed = static_cast<std::uint64_t>(seed);
+}
+
 pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::optional<int> threads,
-                  std::optional<PyScene> scene_in, std::optional<std::int64_t> max_queries) {
+                  std::optional<PyScene> scene_in, std::optional<std::int64_t> max_queries, std::optional<std::int64_t> seed) {
   Problem problem = p_in.problem;
+  if (seed) set_seed(problem, *seed);
   if (time_limit) {
     if (!(*time_limit > 0) || !std::isfinite(*time_limit))
       throw InputError("time_limit must be a positive number of seconds, not " + std::to_string(*time_limit));
@@ -142,6 +148,7 @@ pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::
   q["distance"] = r.queries.distance, q["proximity"] = r.queries.proximity, q["sweep"] = r.queries.sweep;
   d["queries"] = q;
   d["path_hash"] = hex(r.path_hash);
+  d["seed"] = problem.seed;
   d["unit"] = problem.unit;
   d["fitter"] = std::string(to_string(scene.fitter));
   d["level"] = r.level;
@@ -157,7 +164,7 @@ void bind_plan(pyb::module_& m) {
   using pyb::arg;
   pyb::class_<PyProblem>(m, "Problem", R"doc(
 A planning problem (docs/problem-format.md, or an OMPL.app .cfg). Problem.load(path) reads one;
-clearance, contact_tolerance, fitter, time_limit and threads may be changed before planning
+clearance, contact_tolerance, fitter, time_limit, threads and seed may be changed before planning
 (copy() first to keep the original).)doc")
       .def_static("load", &problem_load, arg("path"), R"doc(
 Reads a problem file (.toml or OMPL.app .cfg). Raises swept.Error with the message `swept plan`
@@ -206,6 +213,8 @@ prints (naming the file, the line and the key) on bad input.)doc")
                       if (v < 0) throw InputError("threads must be >= 0 (0: all cores), not " + std::to_string(v));
                       p.problem.threads = v;
                     })
+      .def_property("seed", [](const PyProblem& p) { return p.problem.seed; },
+                    [](PyProblem& p, std::int64_t v) { set_seed(p.problem, v); })
       .def("__repr__", [](const PyProblem& p) {
         return "swept.Problem('" + p.problem.source.string() + "', clearance=" + std::to_string(p.problem.clearance) +
                ", fitter='" + std::string(to_string(p.problem.build.fitter)) + "')";
@@ -230,7 +239,7 @@ different clearances or time limits: swept.plan(problem, scene=scene).)doc")
       .def_property_readonly("build_ms", [](const PyScene& s) { return s.scene->build_ms; });
 
   m.def("_plan", &plan_py, arg("problem"), arg("time_limit") = pyb::none(), arg("threads") = pyb::none(),
-        arg("scene") = pyb::none(), arg("max_queries") = pyb::none());
+        arg("scene") = pyb::none(), arg("max_queries") = pyb::none(), arg("seed") = pyb::none());
 }
 
 }  // namespace swept::py

@@ -105,6 +105,7 @@ class PlanResult(NamedTuple):
     time_ms: dict               #: build, search, smooth, total
     queries: dict               #: distance, tolerance, collide
     path_hash: str              #: 16 hex digits, as `swept plan` prints
+    seed: int                   #: the draw of the trees' samples planned with
     unit: str
     fitter: str
     level: int
@@ -209,7 +210,7 @@ def motion_clearance(a: BVH, b: BVH, poses_a: Any, poses_from: Any, poses_to: An
 
 
 def plan(problem: Problem, time_limit: Optional[float] = None, threads: Optional[int] = None, *,
-         scene: Optional[Scene] = None, max_queries: Optional[int] = None) -> PlanResult:
+         scene: Optional[Scene] = None, max_queries: Optional[int] = None, seed: Optional[int] = None) -> PlanResult:
     """Plans a certified path for the problem's body, as `swept plan` does.
 
     time_limit, threads: override the problem's (seconds; 0 threads: all cores; the path is the
@@ -217,14 +218,17 @@ def plan(problem: Problem, time_limit: Optional[float] = None, threads: Optional
     problem file (reused: no mesh loading or tree building); default: loaded here with the
     problem's fitter. max_queries: stop after this many distance queries (status
     no_path_budget): a limit on the work that, unlike time_limit, ends the same way on every
-    machine and at any thread count. Not finding a path is a result (solved False, status and message saying
-    which limit); bad input (start or goal outside the bounds or in collision, bad bounds)
-    raises swept.Error with `swept plan`'s message. The GIL is released while planning."""
+    machine and at any thread count. seed: which draw of the trees' sample sequence (default: the
+    problem's `seed`, else 0; docs/problem-format.md, planner.seed): another seed, another path
+    where the trees solve the problem, the same path for the same seed. Not finding a path is a
+    result (solved False, status and message saying which limit); bad input (start or goal
+    outside the bounds or in collision, bad bounds) raises swept.Error with `swept plan`'s
+    message. The GIL is released while planning."""
     if not isinstance(problem, Problem):
         raise TypeError(f"problem: a swept.Problem is needed, not {type(problem).__name__}")
     if scene is not None and not isinstance(scene, Scene):
         raise TypeError(f"scene: a swept.Scene is needed, not {type(scene).__name__}")
-    return PlanResult(**_swept._plan(problem, time_limit, threads, scene, max_queries))
+    return PlanResult(**_swept._plan(problem, time_limit, threads, scene, max_queries, seed))
 
 
 def disassemble(assembly: "Assembly | str | os.PathLike", *, clearance: float = 0.01,

@@ -80,6 +80,15 @@ struct TomlReader {
     return true;
   }
 
+  bool integer(const toml::node* n, const std::string& key, std::uint64_t& out) {
+    if (!n) return true;
+    const auto* i = n->as_integer();
+    if (!i) return fail(*n, key, "must be a whole number");
+    if (i->get() < 0) return fail(*n, key, "must be 0 or more, got " + std::to_string(i->get()));
+    out = static_cast<std::uint64_t>(i->get());
+    return true;
+  }
+
   bool string(const toml::node* n, const std::string& key, std::string& out) {
     if (!n) return true;
     const auto* v = n->as_string();
@@ -189,12 +198,13 @@ Result<Problem> load_toml(const fs::path& file) {
     const toml::table* pl = r.table(n, "planner", "a table [planner]");
     int max_triangles = static_cast<int>(std::min<std::size_t>(p.max_triangles, std::numeric_limits<int>::max()));
     if (!pl ||
-        !r.keys(*pl, "planner.", {"clearance", "contact_tolerance", "fitter", "split", "leaf_size", "time_limit", "deflection", "threads", "max_triangles"}) ||
+        !r.keys(*pl, "planner.", {"clearance", "contact_tolerance", "fitter", "split", "leaf_size", "time_limit", "deflection", "threads", "max_triangles", "seed"}) ||
         !r.number(pl->get("clearance"), "planner.clearance", p.clearance, 0.0) ||
         !r.number(pl->get("contact_tolerance"), "planner.contact_tolerance", p.contact_tolerance, 0.0) ||
         !r.number(pl->get("time_limit"), "planner.time_limit", p.time_limit, 0.0, true) ||
         !r.number(pl->get("deflection"), "planner.deflection", p.deflection, 0.0, true) ||
         !r.integer(pl->get("threads"), "planner.threads", p.threads, 0, std::numeric_limits<int>::max()) ||
+        !r.integer(pl->get("seed"), "planner.seed", p.seed) ||
         !r.integer(pl->get("max_triangles"), "planner.max_triangles", max_triangles, 1, std::numeric_limits<int>::max()) ||
         !r.integer(pl->get("leaf_size"), "planner.leaf_size", p.build.leaf_size, 1, kMaxLeafSize))
       return failed();

@@ -24,6 +24,16 @@ double radical_inverse(std::uint64_t i, std::uint64_t base) {
 }
 
 
+// Coordinate `d` of seed `seed`'s offset, in [0, 1): SplitMix64 (Steele, Lea & Flood 2014) of
+// the pair, its top 53 bits.
+double seed_offset(std::uint64_t seed, std::size_t d) {
+  std::uint64_t z = seed * 6 + d + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
 // Rounds in which the other tree reaches for a new node take at most this many steps.
 constexpr int kConnectSteps = 64;
 // A new node's distance is measured exactly only up to the margin + this share of the step: it
@@ -87,6 +97,8 @@ TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_dis
   start_rotation_ = problem.start.rotation;
   goal_rotation_ = problem.goal ? problem.goal->rotation : start.rotation;
   start_rotation_vector_ = rotation_vector(start.rotation * problem.start.rotation.transpose());
+  if (problem.seed != 0)
+    for (std::size_t d = 0; d < shift_.size(); ++d) shift_[d] = seed_offset(problem.seed, d);
   const double size = context.scene_size();
   step_ = 0.1 * (space.bounds.max - space.bounds.min).norm();
   min_step_ = std::max(context.check.margin(), 1e-3 * size);
@@ -111,7 +123,9 @@ TreeNode TreeSearch::make_node(const Pose& pose, const DistanceResult& d) const 
 }
 
 Pose TreeSearch::sample(std::uint64_t i) const {
-  const std::array<double, 6> u = Halton::point(i);
+  std::array<double, 6> u = Halton::point(i);
+  for (std::size_t d = 0; d < u.size(); ++d)
+    if (shift_[d] > 0.0 && (u[d] += shift_[d]) >= 1.0) u[d] -= 1.0;
   const Aabb& bounds = context_.space.bounds;
   const Vec3 point = bounds.min + Vec3(u[0], u[1], u[2]).cwiseProduct(bounds.max - bounds.min);
   Mat3 rotation = trees_[0].front().pose.rotation;

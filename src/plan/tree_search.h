@@ -105,7 +105,8 @@ class TreeSearch {
   /// Joins that had an edge no bridge cleared (no more bridges after kBridgeMisses of them).
   int bridge_misses() const { return bridge_misses_; }
 
-  /// The configuration of sample `i` (≥ 1): the reference point uniform in the bounds, the
+  /// The configuration of sample `i` (≥ 1), from the Halton point of index i shifted by the
+  /// problem's seed (Problem::seed): the reference point uniform in the bounds, the
   /// rotation uniform over SO(3) (Shoemake's map) — except every fourth sample, whose rotation
   /// is a quarter-turn lattice orientation (`lattice_rotation`) of the start's or the goal's
   /// rotation, so that parts and passages aligned with each other meet aligned — uniform in the
@@ -200,6 +201,7 @@ class TreeSearch {
   Mat3 start_rotation_ = Mat3::Identity();   ///< the problem's (rotation limits are about it)
   Mat3 goal_rotation_ = Mat3::Identity();    ///< the goal pose's (else the search start's)
   Vec3 start_rotation_vector_ = Vec3::Zero(); ///< of the search start relative to it
+  std::array<double, 6> shift_{};  ///< the seed's offset of every sample (Problem::seed)
   double step_ = 1.0;       ///< longest step beyond a node's free ball
   double min_step_ = 1e-3;  ///< shortest step tried
   std::array<std::vector<TreeNode>, 2> trees_;

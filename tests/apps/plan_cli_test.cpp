@@ -3,6 +3,7 @@
 // checked by the oracle of tests/oracle against the problem file it was planned for.
 #include "swept/plan/problem.h"
 #include "swept/scenes/box_problems.h"
+#include "swept/scenes/planning_suite.h"
 
 #include "plan/plan_support.h"
 #include "support/cli_support.h"
@@ -147,6 +148,33 @@ TEST_F(PlanCli, SameHashAtAnyThreadCountAndGolden) {
   // The golden hash of this problem's path: a change here means the planner's output changed
   // (update it deliberately, with the reason in the commit).
   EXPECT_EQ(hashes[0], "eccd1423d9656024");
+}
+
+TEST_F(PlanCli, SeedFromTheFileOrTheCommandLine) {
+  // The suite's house is solved by the trees, whose samples the seed shifts: planner.seed in the
+  // file and --seed give the same path, the JSON names the seed, the path passes the oracle, and
+  // seed 0 (the default) is another path.
+  scenes::GeneratedProblem g = scenes::suite::house().problem;
+  g.problem.seed = 3;
+  const std::string seeded = problem(g);
+  g.problem.seed = 0;
+  g.name = "house-plain";
+  const std::string plain = problem(g);
+  const fs::path out = dir / "seeded.json";
+  const CliRun from_file = run(seeded + " --json -o " + out.string());
+  ASSERT_EQ(from_file.code, 0) << from_file.out;
+  const auto doc = nlohmann::json::parse(from_file.out);
+  EXPECT_EQ(doc["seed"], 3);
+  check_written_path(seeded, out, figures_of(doc));
+  const CliRun from_flag = run(plain + " --json --seed 3");
+  ASSERT_EQ(from_flag.code, 0) << from_flag.out;
+  EXPECT_EQ(nlohmann::json::parse(from_flag.out)["path_hash"], doc["path_hash"]);
+  const CliRun zero = run(plain + " --json");
+  ASSERT_EQ(zero.code, 0) << zero.out;
+  EXPECT_EQ(nlohmann::json::parse(zero.out)["seed"], 0);
+  EXPECT_NE(nlohmann::json::parse(zero.out)["path_hash"], doc["path_hash"]);
+  // The flag's range is the file's: 0 to 2^63 − 1.
+  for (const char* bad : {"-1", "1.5", "9223372036854775808"}) EXPECT_EQ(run(plain + " --seed " + bad).code, 1) << bad;
 }
 
 TEST_F(PlanCli, ExitCodes) {

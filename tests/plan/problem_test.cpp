@@ -69,6 +69,7 @@ TEST_F(ProblemFiles, TomlRoundTrip) {
   EXPECT_EQ(p->build.fitter, Fitter::pqp);
   EXPECT_EQ(p->build.split, SplitRule::min_sa);  // the defaults where the file is silent
   EXPECT_EQ(p->build.leaf_size, 1);
+  EXPECT_EQ(p->seed, 0u);  // the Halton sequence itself
   EXPECT_DOUBLE_EQ(p->clearance, 0.002);
   EXPECT_DOUBLE_EQ(p->start.translation.z(), -7.49);
   auto s = load_scene(*p, p->build);
@@ -105,6 +106,14 @@ TEST_F(ProblemFiles, TreeSettingsReachTheScene) {
     EXPECT_GT(largest_leaf, 1u);  // 12 triangles with leaves of up to 4: some leaf holds more than one
     EXPECT_LE(largest_leaf, 4u);
   }
+}
+
+TEST_F(ProblemFiles, SeedIsRead) {
+  std::string text = kGood;
+  text.replace(text.find("[planner]"), 9, "[planner]\nseed = 9223372036854775807");
+  auto p = load_problem(write("seed.toml", text));
+  ASSERT_TRUE(p) << p.error().message;
+  EXPECT_EQ(p->seed, 9223372036854775807u);  // TOML's largest integer
 }
 
 TEST_F(ProblemFiles, OmplAppCfg) {
@@ -253,6 +262,9 @@ TEST_F(ProblemFiles, WrongTypesAndRangesAreErrorsNamingTheKeyAndLine) {
       {"threads = 1", "threads = 1.5", "planner.threads: must be a whole number"},
       {"threads = 1", "threads = 4294967297", "planner.threads: must be from 0 to 2147483647, got 4294967297"},
       {"threads = 1", "threads = -1", "planner.threads: must be from 0"},
+      {"[planner]", "seed = -3", "planner.seed: must be 0 or more, got -3"},
+      {"[planner]", "seed = 2.5", "planner.seed: must be a whole number"},
+      {"[planner]", "seed = \"7\"", "planner.seed: must be a whole number"},
       {"clearance = 0.002", "clearance = \"1\"", "planner.clearance: must be a number"},
       {"clearance = 0.002", "clearance = nan", "planner.clearance: must be a finite number"},
       {"clearance = 0.002", "clearance = -0.5", "planner.clearance: must be ≥ 0"},

@@ -110,6 +110,68 @@ TEST(TreeSearch, FreeRotationsCoverSO3) {
   EXPECT_NEAR(static_cast<double>(small) / n, (std::numbers::pi / 2 - 1.0) / std::numbers::pi, 0.01);
 }
 
+TEST(TreeSearch, ASeedShiftsEverySampleByOneOffsetModuloOne) {
+  // Problem::seed: the reference point of sample i with seed s is that of seed 0 moved by the
+  // same fraction of the bounds for every i, modulo the bounds (a Cranley–Patterson rotation);
+  // the same seed gives the same samples, another seed another offset.
+  auto offsets = [](std::uint64_t seed) {
+    auto g = rod_in_cage(2.3, 6.0);
+    g.problem.seed = seed;
+    PhaseRig rig(std::move(g));
+    const Pose start = rig.problem().start;
+    detail::TreeSearch search(rig.context, start, rig.start_distance(start), 1.0);
+    const Vec3 lo = rig.space.bounds.min, size = rig.space.bounds.max - rig.space.bounds.min;
+    std::vector<Vec3> out;
+    for (std::uint64_t i = 1; i <= 200; ++i) out.push_back((search.sample(i).apply(rig.space.reference) - lo).cwiseQuotient(size));
+    return out;
+  };
+  const std::vector<Vec3> plain = offsets(0), seven = offsets(7), again = offsets(7), eight = offsets(8);
+  auto shift = [&](const std::vector<Vec3>& u, std::size_t i) {
+    Vec3 d = u[i] - plain[i];
+    for (int k = 0; k < 3; ++k) d[k] -= std::floor(d[k]);
+    return d;
+  };
+  const Vec3 s7 = shift(seven, 0);
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(seven[i], again[i]) << i;
+    const Vec3 d = shift(seven, i);
+    for (int k = 0; k < 3; ++k) {
+      // The same offset (a wrap near 0 or 1 is the same point of the circle).
+      const double gap = std::abs(d[k] - s7[k]);
+      EXPECT_LT(std::min(gap, 1.0 - gap), 1e-9) << i << " " << k;
+      EXPECT_GE(seven[i][k], -1e-12);
+      EXPECT_LT(seven[i][k], 1.0 + 1e-12);
+    }
+  }
+  EXPECT_GT(s7.minCoeff(), 1e-6);  // the seed moves every coordinate (this seed's offsets)
+  EXPECT_GT((shift(eight, 0) - s7).norm(), 1e-3);
+}
+
+TEST(TreeSearch, ASeedIsAnotherPathTheSameAtAnyThreadCountAndValid) {
+  // The suite's house, solved by the trees: seeds 0, 1 and 2 give three paths, each the same at
+  // 1 and 2 threads, each valid by the oracle that shares no code with swept.
+  std::vector<std::uint64_t> seen;
+  for (std::uint64_t seed : {0u, 1u, 2u}) {
+    std::vector<std::uint64_t> hashes;
+    for (int threads : {1, 2}) {
+      GeneratedProblem g = scenes::suite::house().problem;
+      g.problem.seed = seed;
+      PhaseRig rig(std::move(g), 120.0);
+      const Pose start = rig.problem().start;
+      detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
+      detail::TreeOutcome outcome = detail::TreeOutcome::time_limit;
+      tbb::task_arena arena(threads);
+      const auto path = arena.execute([&] { return search.run(outcome); });
+      ASSERT_TRUE(path) << "seed " << seed << ", " << search.nodes() << " nodes";
+      if (threads == 1) check_path_independently(rig.scene, rig.problem(), Path{*path});
+      hashes.push_back(path_hash(Path{*path}));
+    }
+    EXPECT_EQ(hashes[0], hashes[1]) << "seed " << seed;
+    for (std::uint64_t h : seen) EXPECT_NE(hashes[0], h) << "seed " << seed;
+    seen.push_back(hashes[0]);
+  }
+}
+
 TEST(TreeSearch, LatticeRotationsAreTheCubeGroup) {
   std::vector<Mat3> seen;
   for (std::uint64_t k = 0; k < 24; ++k) {

@@ -279,6 +279,28 @@ def test_plan_equals_the_command_line(tmp_path, swept_cli):
         swept.plan(problem, scene=scene, max_queries=0)
 
 
+def test_plan_seed_is_another_draw_of_the_trees(tmp_path, swept_cli):
+    # The suite's house is solved by the trees, whose samples the seed shifts.
+    subprocess.run([swept_cli, "scene", "house", "-o", str(tmp_path / "house")], check=True, capture_output=True)
+    path = str(tmp_path / "house" / "problem.toml")
+    problem = swept.Problem.load(path)
+    assert problem.seed == 0
+    scene = swept.Scene(problem)
+    r0 = swept.plan(problem, scene=scene)
+    r3 = swept.plan(problem, scene=scene, seed=3)
+    assert r0.solved and r3.solved and r0.seed == 0 and r3.seed == 3 and r3.path_hash != r0.path_hash
+    p3 = problem.copy()
+    p3.seed = 3
+    assert problem.seed == 0 and swept.plan(p3, threads=1, scene=scene).path_hash == r3.path_hash
+    cli = json.loads(subprocess.run([swept_cli, "plan", path, "--json", "-q", "--seed", "3"],
+                                    check=True, capture_output=True, text=True).stdout)
+    assert cli["path_hash"] == r3.path_hash and cli["seed"] == 3
+    with pytest.raises(swept.Error, match="seed must be >= 0, not -1"):
+        p3.seed = -1
+    with pytest.raises(swept.Error, match="seed must be >= 0, not -2"):
+        swept.plan(problem, scene=scene, seed=-2)
+
+
 # ---- errors: swept.Error with the command line's message --------------------------------------------
 def cli_error(cli, *args):
     p = subprocess.run([cli, *args], capture_output=True, text=True)

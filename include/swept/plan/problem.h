@@ -43,6 +43,12 @@ struct Problem {
   BuildConfig build;             ///< how both trees are built: fitter, split rule, leaf size
   double time_limit = 60.0;       ///< seconds
   int threads = 0;                ///< 0: all cores
+  /// Which draw of the trees' sample sequence: 0, the Halton sequence itself; another value
+  /// shifts every sample by the same pseudo-random offset, modulo 1 in each coordinate (a
+  /// Cranley–Patterson rotation: the same low dispersion). The path is the same for the same
+  /// seed at any thread count; another seed is another path (and time) wherever the trees
+  /// solve the problem.
+  std::uint64_t seed = 0;
   double deflection = 0.1;        ///< default BRepMesh linear deflection for CAD meshes
   /// Triangle budget of each CAD mesh's tessellation (ImportOptions::max_triangles).
   std::size_t max_triangles = ImportOptions{}.max_triangles;
