@@ -4,7 +4,7 @@
 // sides, ompl_peer.h for OMPL's set-up); this program picks the problems and prints.
 //
 //   bench_plan [--quick] [--time-limit S] [--seeds N] [--threads N] [--only a,b,...] [--no-cad]
-//              [--suite classic|ompl|all] [--swept-time-limit S] [--thread-check]
+//              [--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--swept-seeds]
 //              [--ompl-collide-only] [--json FILE]
 //
 // Problems (--suite classic, the default): the box problems of the scenes library (peg_in_hole,
@@ -42,7 +42,7 @@ using namespace swept::bench;
 [[noreturn]] void usage(const std::string& why) {
   std::cerr << "bench_plan: " << why << "\n"
             << "usage: bench_plan [--quick] [--time-limit S] [--seeds N] [--threads N] [--only a,b] [--no-cad] "
-               "[--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--ompl-collide-only] [--json FILE]\n"
+               "[--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--swept-seeds] [--ompl-collide-only] [--json FILE]\n"
             << "  --quick        10 s limit, 5 seeds (defaults: 60 s, 5 seeds)\n"
             << "  --suite S      classic: box problems and CAD scenes (default); ompl: the OMPL.app counterparts "
                "(twisty-slot, bug-trap, hooks-1.5, hooks-1.2, hooks-1.1, house, cubicles, spiral-tube); all: both\n"
@@ -50,6 +50,8 @@ using namespace swept::bench;
                "OMPL keeps --time-limit)\n"
             << "  --thread-check one more swept run at 1 thread per solved problem: the path hash must not change\n"
             << "                 (its time is printed, and how many times swept's median it is: what the other cores gave)\n"
+            << "  --swept-seeds  swept over seeds too, as OMPL is: one more run for each seed 1..N-1 (another draw of\n"
+               "                 the trees' samples), each path re-checked; their median with seed 0's beside OMPL's\n"
             << "  --threads N    swept's threads (0: all cores; default 0)\n"
             << "  --only a,b     only these problems (peg_in_hole, t_slot, l_tunnel, bar_through_slot, enclosed, "
                "air-cleaner, cylinder-head, tunnel-console, or the --suite ompl names)\n"
@@ -108,6 +110,8 @@ int main(int argc, char** argv) {
       if (swept_hard_limit <= 0) usage("--swept-time-limit must be > 0");
     } else if (a == "--thread-check") {
       o.thread_check = true;
+    } else if (a == "--swept-seeds") {
+      o.swept_seeds = true;
     } else if (a == "--no-cad") {
       cad = false;
     } else if (a == "--ompl-collide-only") {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace swept::bench {
 namespace {
 
@@ -85,6 +87,39 @@ TEST(PlanCompareJson, TheRunAtOneThreadIsPrintedWithItsShareOfTheMedian) {
   testing::internal::CaptureStdout();
   print_tables({r}, {.time_limit = 10, .seeds = 3, .threads = 2});
   EXPECT_NE(testing::internal::GetCapturedStdout().find("1 thread: NO (23.0 ms"), std::string::npos);
+}
+
+TEST(PlanCompareJson, SeedRunsReadBackAndTheirMedianCountsSeedZero) {
+  CompareRow r = row();
+  r.swept[0].result.status = PlanStatus::solved;  // seed 0, the main run
+  r.swept[0].result.path_hash = 0xabc;
+  r.path_checked = true;
+  // Seed 0's median is 11.5 (runs 11 and 12); seeds 1-3 took 40, 9 and 30 ms (seed 3 found no
+  // path): the median of 11.5, 40, 9, 30 is (11.5 + 30) / 2 = 20.75.
+  r.seed_runs = {{.seed = 1, .status = PlanStatus::solved, .ms = 40.0, .path_hash = 0x1, .checked = true},
+                 {.seed = 2, .status = PlanStatus::solved, .ms = 9.0, .path_hash = 0xabc, .checked = true},
+                 {.seed = 3, .status = PlanStatus::no_path_time, .ms = 30.0, .path_hash = 0, .checked = std::nullopt}};
+  EXPECT_EQ(r.swept_seeds_median(), 20.75);
+  EXPECT_EQ(r.swept_seeds_solved(), 3);
+  const CompareOptions o{.time_limit = 10, .seeds = 4, .threads = 2, .swept_seeds = true};
+  const nlohmann::json j = to_json({r}, o);
+  EXPECT_EQ(j["problems"][0]["swept_seeds_median_ms"], 20.75);
+  EXPECT_EQ(j["problems"][0]["ratio_ompl_median_over_swept_seeds"], 200.0 / 20.75);
+  const auto back = rows_from_json(nlohmann::json::parse(j.dump()));
+  ASSERT_EQ(back[0].seed_runs.size(), 3u);
+  EXPECT_EQ(back[0].seed_runs[2].status, PlanStatus::no_path_time);
+  EXPECT_FALSE(back[0].seed_runs[2].checked);
+  EXPECT_EQ(back[0].seed_runs[0].path_hash, 0x1u);
+  EXPECT_EQ(back[0].swept_seeds_median(), 20.75);
+  // The table: 3 of 4 solved, the median, the range, and seed 2's path is seed 0's (2 distinct).
+  testing::internal::CaptureStdout();
+  print_tables({r}, o);
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_NE(out.find("3/4"), std::string::npos) << out;
+  EXPECT_NE(out.find("20.8"), std::string::npos) << out;
+  EXPECT_NE(out.find("9.0-40.0"), std::string::npos) << out;
+  EXPECT_NE(out.find("2 distinct, 3 valid"), std::string::npos) << out;
+  EXPECT_TRUE(std::isnan(row().swept_seeds_median()));  // no seed runs
 }
 
 TEST(PlanCompareJson, StatusWordsReadBack) {

@@ -96,6 +96,18 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
     std::fprintf(stderr, "  swept 1 thread  %-22s plan %10.1f ms  same path: %s\n",
                  std::string(status_name(one.result.status)).c_str(), one.plan_ms, same(one.result) ? "yes" : "NO");
   }
+  if (o.swept_seeds) {  // other draws of the trees' samples, one run each, as OMPL's seeds
+    for (int k = 1; k < seeds; ++k) {
+      PlanCase seeded = c;
+      seeded.problem.seed = static_cast<std::uint64_t>(k);
+      const SweptRun s = run_swept(seeded, *main_scene, c.problem.build.fitter, limit, threads);
+      SeedRun run{.seed = seeded.problem.seed, .status = s.result.status, .ms = s.plan_ms, .path_hash = s.result.path_hash};
+      if (s.result.solved()) run.checked = check_path(seeded.problem, *main_scene, s.result.path).valid;
+      row.seed_runs.push_back(run);
+      std::fprintf(stderr, "  swept seed %-3d %-22s plan %10.1f ms  waypoints %zu%s\n", k, std::string(status_name(s.result.status)).c_str(),
+                   s.plan_ms, s.result.path.poses.size(), !run.checked ? "" : *run.checked ? "  check: valid" : "  check: NOT VALID");
+    }
+  }
   row.body_triangles = main_scene->body.triangles.size();
   row.obstacle_triangles = main_scene->obstacles.triangles.size();
 

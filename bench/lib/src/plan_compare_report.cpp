@@ -77,6 +77,35 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     const char* check = !r.path_checked ? "" : *r.path_checked ? "; check: valid" : "; check: NOT VALID";
     std::printf("  %s (%s)%s%s\n", r.deterministic ? "yes" : "NO", hash, one.c_str(), check);
   }
+  if (std::none_of(rows.begin(), rows.end(), [](const CompareRow& r) { return !r.seed_runs.empty(); })) {
+    std::fflush(stdout);
+    return;
+  }
+  // swept over seeds, as OMPL is: seed 0 (its median above) and one run of each other seed.
+  std::printf("\nswept over seeds 0-%d (another draw of the trees' samples each; seed 0: the median above, the others one run "
+              "each; a run without a path counts at its time), beside OMPL's median over its seeds\n",
+              seeds - 1);
+  std::printf("%-18s %7s %11s %21s %11s %8s  %s\n", "problem", "solved", "median ms", "min-max ms", "OMPL ms", "ratio",
+              "paths (check_path)");
+  for (const CompareRow& r : rows) {
+    if (!r.error.empty() || r.seed_runs.empty()) continue;
+    double lo = r.swept_median(), hi = r.swept_median();
+    int valid = r.path_checked.value_or(false) ? 1 : 0, distinct = 1;
+    std::vector<std::uint64_t> hashes{r.main().result.path_hash};
+    for (const SeedRun& s : r.seed_runs) {
+      lo = std::min(lo, s.ms), hi = std::max(hi, s.ms);
+      valid += s.checked.value_or(false) ? 1 : 0;
+      if (std::find(hashes.begin(), hashes.end(), s.path_hash) == hashes.end() && s.status == PlanStatus::solved) ++distinct;
+      hashes.push_back(s.path_hash);
+    }
+    const int n = static_cast<int>(r.seed_runs.size()) + 1;
+    const std::string solved = std::to_string(r.swept_seeds_solved()) + "/" + std::to_string(n);
+    const std::string range = fmt(lo) + "-" + fmt(hi);
+    const std::string paths = std::to_string(distinct) + " distinct, " + std::to_string(valid) + " valid";
+    std::printf("%-18s %7s %11s %21s %11s %8s  %s\n", r.name.c_str(), solved.c_str(), fmt(r.swept_seeds_median()).c_str(),
+                range.c_str(), fmt(r.ompl_median()).c_str(), fmt(r.ompl_median() / std::max(r.swept_seeds_median(), 1e-9), 2).c_str(),
+                paths.c_str());
+  }
   std::fflush(stdout);
 }
 

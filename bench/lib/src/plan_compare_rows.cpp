@@ -26,6 +26,18 @@ double median(std::vector<double> t) {
 
 double CompareRow::swept_median() const { return main_ms.empty() ? main().plan_ms : median(main_ms); }
 
+double CompareRow::swept_seeds_median() const {
+  if (seed_runs.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> t{swept_median()};
+  for (const SeedRun& s : seed_runs) t.push_back(s.ms);
+  return median(std::move(t));
+}
+
+int CompareRow::swept_seeds_solved() const {
+  return static_cast<int>(main().result.solved()) +
+         static_cast<int>(std::count_if(seed_runs.begin(), seed_runs.end(), [](const SeedRun& s) { return s.status == PlanStatus::solved; }));
+}
+
 bool CompareRow::one_thread_same() const {
   return one_thread_status && !swept.empty() && *one_thread_status == main().result.status &&
          one_thread_hash == main().result.path_hash;
@@ -139,6 +151,19 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
     }
     p["swept_main_runs_ms"] = r.main_ms;
     p["swept_median_ms"] = r.swept_median();
+    if (!r.seed_runs.empty()) {
+      for (const SeedRun& s : r.seed_runs) {
+        char hash[32];
+        std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.path_hash));
+        p["swept_seed_runs"].push_back({{"seed", s.seed},
+                                        {"status", std::string(status_name(s.status))},
+                                        {"plan_ms", s.ms},
+                                        {"path_hash", hash},
+                                        {"path_checked", s.checked ? nlohmann::json(*s.checked) : nlohmann::json(nullptr)}});
+      }
+      p["swept_seeds_solved"] = r.swept_seeds_solved();
+      p["swept_seeds_median_ms"] = r.swept_seeds_median();
+    }
     p["ompl_fcl_build_ms"] = r.ompl_fcl_build_ms;
     for (const OmplRun& o : r.ompl)
       p["ompl"].push_back({{"seed", o.seed},
@@ -159,6 +184,7 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
     p["ompl_median_with_simplify_ms"] = r.ompl_median_with_simplify();
     p["ratio_ompl_median_over_swept"] = r.ompl_median() / std::max(r.swept_median(), 1e-9);
     p["ratio_ompl_median_with_simplify_over_swept"] = r.ompl_median_with_simplify() / std::max(r.swept_median(), 1e-9);
+    if (!r.seed_runs.empty()) p["ratio_ompl_median_over_swept_seeds"] = r.ompl_median() / std::max(r.swept_seeds_median(), 1e-9);
     p["goal"] = r.verdict();
     j["problems"].push_back(p);
   }
@@ -206,6 +232,15 @@ std::vector<CompareRow> rows_from_json(const nlohmann::json& j) {
       r.one_thread_ms = one.value("plan_ms", nan);
     }
     r.main_ms = p.value("swept_main_runs_ms", std::vector<double>{});
+    for (const auto& s : p.value("swept_seed_runs", nlohmann::json::array())) {  // with --swept-seeds
+      SeedRun run;
+      run.seed = s.value("seed", std::uint64_t{0});
+      run.status = status_named(s.value("status", "")).value_or(PlanStatus::no_path_resolution);
+      run.ms = s.value("plan_ms", nan);
+      run.path_hash = std::stoull(s.value("path_hash", std::string("0")), nullptr, 16);
+      if (s.contains("path_checked") && !s["path_checked"].is_null()) run.checked = s["path_checked"].get<bool>();
+      r.seed_runs.push_back(run);
+    }
     r.ompl_fcl_build_ms = p.value("ompl_fcl_build_ms", nan);
     for (const auto& o : p.value("ompl", nlohmann::json::array())) {
       OmplRun run;

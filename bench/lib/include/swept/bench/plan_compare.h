@@ -41,6 +41,19 @@ struct CompareOptions {
   /// One more run of the problem's fitter at 1 thread (when `threads` ≠ 1 and the problem was
   /// solved): the path hash must be the same as at `threads`.
   bool thread_check = false;
+  /// swept over seeds as OMPL is: one more run of the problem's fitter for each of the seeds
+  /// 1 … seeds − 1 (Problem::seed, another draw of the trees' samples), each path re-checked by
+  /// check_path; their median with seed 0's beside OMPL's median over its seeds.
+  bool swept_seeds = false;
+};
+
+/// One run of swept with another seed (CompareOptions::swept_seeds).
+struct SeedRun {
+  std::uint64_t seed = 0;
+  PlanStatus status = PlanStatus::no_path_resolution;
+  double ms = 0.0;
+  std::uint64_t path_hash = 0;
+  std::optional<bool> checked;  ///< check_path of its path; unset when not solved
 };
 
 struct SweptRun {
@@ -94,12 +107,20 @@ struct CompareRow {
   /// plan() times of every run of the problem's fitter (swept is deterministic: the same path
   /// each time, so repeats measure the timing spread only).
   std::vector<double> main_ms;
+  /// CompareOptions::swept_seeds: the runs with seeds 1 … seeds − 1 (empty when not asked).
+  std::vector<SeedRun> seed_runs;
 
   const SweptRun& main() const { return swept.front(); }
   /// The thread check ran and gave the main run's status and path hash.
   bool one_thread_same() const;
   /// Median over the runs of the problem's fitter: compared with OMPL's median over seeds.
   double swept_median() const;
+  /// Median over seed 0 (swept_median()) and the seed runs, a run without a path counted at its
+  /// time (the limit, when that stopped it), as ompl_median() counts OMPL's failures; NaN
+  /// without seed runs.
+  double swept_seeds_median() const;
+  /// Seed runs solved, seed 0 included.
+  int swept_seeds_solved() const;
   int ompl_colliding() const;
   /// Solutions whose simplified path swept's motion check finds in contact.
   int ompl_simplified_colliding() const;
