@@ -120,6 +120,16 @@ TEST(PlanCompareJson, SeedRunsReadBackAndTheirMedianCountsSeedZero) {
   EXPECT_NE(out.find("9.0-40.0"), std::string::npos) << out;
   EXPECT_NE(out.find("2 distinct, 3 valid"), std::string::npos) << out;
   EXPECT_TRUE(std::isnan(row().swept_seeds_median()));  // no seed runs
+  // The goal over seeds: seed 3 found no path while OMPL solved the problem.
+  EXPECT_EQ(r.seeds_verdict(), "MISSED: a seed without a path");
+  EXPECT_EQ(j["problems"][0]["goal_over_seeds"], "MISSED: a seed without a path");
+  r.seed_runs[2].status = PlanStatus::solved;  // every seed solved: 200 / 20.75 = 9.6 >= 3
+  EXPECT_EQ(r.seeds_verdict(), "met: >= 3x");
+  r.seed_runs[0].ms = r.seed_runs[2].ms = 90.0;  // 11.5, 90, 9, 90: median 50.75, 200 / 50.75 = 3.94x
+  EXPECT_EQ(r.seeds_verdict(), "met: >= 3x");
+  r.seed_runs[1].ms = 95.0;  // 11.5, 90, 95, 90: median 90, 200 / 90 = 2.2x
+  EXPECT_EQ(r.seeds_verdict(), "MISSED: < 3x");
+  EXPECT_EQ(row().seeds_verdict(), "");
 }
 
 TEST(PlanCompareJson, StatusWordsReadBack) {

@@ -85,8 +85,8 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
   std::printf("\nswept over seeds 0-%d (another draw of the trees' samples each; seed 0: the median above, the others one run "
               "each; a run without a path counts at its time), beside OMPL's median over its seeds\n",
               seeds - 1);
-  std::printf("%-18s %7s %11s %21s %11s %8s  %s\n", "problem", "solved", "median ms", "min-max ms", "OMPL ms", "ratio",
-              "paths (check_path)");
+  std::printf("%-18s %7s %11s %21s %11s %8s  %-22s %s\n", "problem", "solved", "median ms", "min-max ms", "OMPL ms", "ratio",
+              "paths (check_path)", "goal over seeds");
   for (const CompareRow& r : rows) {
     if (!r.error.empty() || r.seed_runs.empty()) continue;
     double lo = r.swept_median(), hi = r.swept_median();
@@ -102,9 +102,9 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
     const std::string solved = std::to_string(r.swept_seeds_solved()) + "/" + std::to_string(n);
     const std::string range = fmt(lo) + "-" + fmt(hi);
     const std::string paths = std::to_string(distinct) + " distinct, " + std::to_string(valid) + " valid";
-    std::printf("%-18s %7s %11s %21s %11s %8s  %s\n", r.name.c_str(), solved.c_str(), fmt(r.swept_seeds_median()).c_str(),
+    std::printf("%-18s %7s %11s %21s %11s %8s  %-22s %s\n", r.name.c_str(), solved.c_str(), fmt(r.swept_seeds_median()).c_str(),
                 range.c_str(), fmt(r.ompl_median()).c_str(), fmt(r.ompl_median() / std::max(r.swept_seeds_median(), 1e-9), 2).c_str(),
-                paths.c_str());
+                paths.c_str(), r.seeds_verdict().c_str());
   }
   std::fflush(stdout);
 }

@@ -80,6 +80,14 @@ double CompareRow::ompl_max() const {
   return m;
 }
 
+std::string CompareRow::seeds_verdict() const {
+  if (!error.empty() || seed_runs.empty()) return "";
+  const bool every = swept_seeds_solved() == static_cast<int>(seed_runs.size()) + 1;
+  if (ompl_successes() == 0) return every ? "met: OMPL 0 %" : "a seed without a path";
+  if (!every) return "MISSED: a seed without a path";
+  return ompl_median() / std::max(swept_seeds_median(), 1e-9) >= 3.0 ? "met: >= 3x" : "MISSED: < 3x";
+}
+
 std::string CompareRow::verdict() const {
   if (!error.empty()) return "not run";
   const bool ours = main().result.solved();
@@ -184,7 +192,10 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
     p["ompl_median_with_simplify_ms"] = r.ompl_median_with_simplify();
     p["ratio_ompl_median_over_swept"] = r.ompl_median() / std::max(r.swept_median(), 1e-9);
     p["ratio_ompl_median_with_simplify_over_swept"] = r.ompl_median_with_simplify() / std::max(r.swept_median(), 1e-9);
-    if (!r.seed_runs.empty()) p["ratio_ompl_median_over_swept_seeds"] = r.ompl_median() / std::max(r.swept_seeds_median(), 1e-9);
+    if (!r.seed_runs.empty()) {
+      p["ratio_ompl_median_over_swept_seeds"] = r.ompl_median() / std::max(r.swept_seeds_median(), 1e-9);
+      p["goal_over_seeds"] = r.seeds_verdict();
+    }
     p["goal"] = r.verdict();
     j["problems"].push_back(p);
   }

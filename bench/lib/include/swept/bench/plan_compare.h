@@ -134,6 +134,9 @@ struct CompareRow {
   double ompl_max() const;
   /// The goal for this problem: "met: >= 3x", "MISSED: OMPL solves it", ...
   std::string verdict() const;
+  /// The same goal over seeds (CompareOptions::swept_seeds): every seed solved, and the median
+  /// over seeds at ≤ 1/3 of OMPL's; "" without seed runs.
+  std::string seeds_verdict() const;
 };
 
 /// Runs both planners on one problem (progress lines on stderr).
