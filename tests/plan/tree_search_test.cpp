@@ -361,12 +361,16 @@ TEST(TreeSearch, LazyEdgesAreCertifiedBeforeAPathUsesThem) {
 }
 
 TEST(TreeSearch, BridgesStopAfterFourJoinsWithoutOne) {
-  // The cubicles' joined paths fail where long steps cross whole walls between cubicles or
-  // floors, which no motion between nearby waypoints avoids: after kBridgeMisses such joins no
-  // bridge is tried any more, so the tries stay within kBridgeMisses × kBridges (each miss stops
-  // at its first edge without a bridge), however many joins fail after them. The path is the one
-  // the later joins find, and passes the independent check.
-  PhaseRig rig(scenes::suite::cubicles().problem, 120.0);
+  // Joined paths fail where lazy steps cross whole walls, which no motion between nearby
+  // waypoints avoids: after kBridgeMisses such joins no bridge is tried any more, so the tries
+  // stay within kBridgeMisses × kBridges (each miss stops at its first edge without a bridge),
+  // however many joins fail after them. The path is the one the later joins find, and passes the
+  // independent check. The suite's house at seed 20 is such a draw (a scan of seeds 0-60 found
+  // six with four misses; this one cuts eight edges). Since a lazy step's quarters are checked
+  // too, the cubicles' seed 0, this test's draw before, no longer joins through walls.
+  GeneratedProblem g = scenes::suite::house().problem;
+  g.problem.seed = 20;
+  PhaseRig rig(std::move(g), 120.0);
   rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
   const Pose start = rig.problem().start;
   detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
