@@ -48,9 +48,9 @@ constexpr double kNodeReach = 0.03;
 // of its interior: its middle, and on a step longer than kLazyLong of the longest, its quarters
 // too (each only where neither end's free ball holds it). One point lets the trees join through
 // thin walls, whose lazy edges then fail when a path needs them. Over seeds 0-39 on both sides
-// (bench_plan --swept-seeds, two threads), swept's median: house 23.3 -> 17.4 ms, cubicles
-// 36.1 -> 27.8 ms (2.66x -> 3.48x RRTConnect's); three points on every step: 17.4 and 29.0.
-// docs/bench-plan.md.
+// (bench_plan --swept-seeds, two threads), swept's median: house 23.3 -> 17.9 ms, cubicles
+// 36.1 -> 26.9 ms (2.66x -> 3.56x RRTConnect's); three points on every step: 17.4 and 29.0 in
+// a scratch run. docs/bench-plan.md.
 constexpr std::array<double, 3> kLazyPoints{0.5, 0.25, 0.75};
 constexpr double kLazyLong = 0.75;
 
