@@ -26,7 +26,7 @@ Result<PlanScene> scene_for(const PlanCase& c, Fitter fitter) {
   return load_scene(c.problem, build_config(c.problem, fitter));
 }
 
-SweptRun run_swept(const PlanCase& c, const PlanScene& scene, Fitter fitter, double limit, int threads) {
+SweptRun run_swept(const Problem& problem, const PlanScene& scene, Fitter fitter, double limit, int threads) {
   SweptRun run;
   run.fitter = fitter;
   run.build_ms = scene.build_ms;
@@ -34,7 +34,7 @@ SweptRun run_swept(const PlanCase& c, const PlanScene& scene, Fitter fitter, dou
   options.time_limit = limit;
   options.threads = threads;
   const auto t0 = Clock::now();
-  run.result = plan(c.problem, scene, options);
+  run.result = plan(problem, scene, options);
   run.plan_ms = ms_since(t0);
   return run;
 }
@@ -56,14 +56,14 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
   std::optional<PlanScene> main_scene;
   for (std::size_t i = 0; i < fitters.size(); ++i) {
     if (i == 1 && main_scene) {  // the determinism check reuses the scene
-      row.swept.push_back(run_swept(c, *main_scene, fitters[i], limit, threads));
+      row.swept.push_back(run_swept(c.problem, *main_scene, fitters[i], limit, threads));
     } else {
       auto scene = scene_for(c, fitters[i]);
       if (!scene) {
         row.error = scene.error().message;
         return row;
       }
-      row.swept.push_back(run_swept(c, *scene, fitters[i], limit, threads));
+      row.swept.push_back(run_swept(c.problem, *scene, fitters[i], limit, threads));
       if (i == 0) main_scene = std::move(*scene);
     }
     const SweptRun& s = row.swept.back();
@@ -79,7 +79,7 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
   row.main_ms = {row.swept[0].plan_ms, row.swept[1].plan_ms};
   // (A run that ends on the time limit is not repeated: its median is the limit anyway.)
   for (int k = 2; first.status != PlanStatus::no_path_time && k < seeds; ++k) {
-    const SweptRun again = run_swept(c, *main_scene, c.problem.build.fitter, limit, threads);
+    const SweptRun again = run_swept(c.problem, *main_scene, c.problem.build.fitter, limit, threads);
     row.main_ms.push_back(again.plan_ms);
     row.deterministic = row.deterministic && same(again.result);
   }
@@ -89,7 +89,7 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
     std::fprintf(stderr, "  swept path check: %s\n", check.message.c_str());
   }
   if (o.thread_check && threads != 1 && first.solved()) {
-    const SweptRun one = run_swept(c, *main_scene, c.problem.build.fitter, limit, 1);
+    const SweptRun one = run_swept(c.problem, *main_scene, c.problem.build.fitter, limit, 1);
     row.one_thread_status = one.result.status;
     row.one_thread_hash = one.result.path_hash;
     row.one_thread_ms = one.plan_ms;
@@ -98,11 +98,11 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
   }
   if (o.swept_seeds) {  // other draws of the trees' samples, one run each, as OMPL's seeds
     for (int k = 1; k < seeds; ++k) {
-      PlanCase seeded = c;
-      seeded.problem.seed = static_cast<std::uint64_t>(k);
+      Problem seeded = c.problem;
+      seeded.seed = static_cast<std::uint64_t>(k);
       const SweptRun s = run_swept(seeded, *main_scene, c.problem.build.fitter, limit, threads);
-      SeedRun run{.seed = seeded.problem.seed, .status = s.result.status, .ms = s.plan_ms, .path_hash = s.result.path_hash};
-      if (s.result.solved()) run.checked = check_path(seeded.problem, *main_scene, s.result.path).valid;
+      SeedRun run{.seed = seeded.seed, .status = s.result.status, .ms = s.plan_ms, .path_hash = s.result.path_hash};
+      if (s.result.solved()) run.checked = check_path(seeded, *main_scene, s.result.path).valid;
       row.seed_runs.push_back(run);
       std::fprintf(stderr, "  swept seed %-3d %-22s plan %10.1f ms  waypoints %zu%s\n", k, std::string(status_name(s.result.status)).c_str(),
                    s.plan_ms, s.result.path.poses.size(), !run.checked ? "" : *run.checked ? "  check: valid" : "  check: NOT VALID");
