@@ -415,7 +415,6 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   const std::size_t n = ids.size();
   out.vertices.clear();
   out.corners.clear();
-  detail::reserve_huge(out.corners, n);
   out.corners.resize(n);
   // Closed meshes have about n / 2 vertices: the table starts with room for them at half load
   // and doubles when it is half full (a table for the worst case, 3n, spent its time in cache
@@ -526,9 +525,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   // lie close together in memory (on a 1.3M-triangle CAD mesh this alone makes the build about
   // a quarter faster than in the file's order). The order is a total one (ties by input index),
   // so the tree is still a function of the input alone.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
-  detail::reserve_huge(keyed, n);
-  keyed.resize(n);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
   const Vec3 size = box.max - box.min;
   const Vec3 cells = Vec3::NullaryExpr([&](Eigen::Index k) { return size[k] > 0.0 ? 2097151.0 / size[k] : 0.0; });
   for_each_index([&](std::size_t i) {
@@ -542,9 +539,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     std::sort(keyed.begin(), keyed.end());
   }
   std::vector<std::uint32_t> order(n);
-  std::vector<TriInfo> info;
-  detail::reserve_huge(info, n);
-  info.resize(n);
+  std::vector<TriInfo> info(n);
   for_each_index([&](std::size_t i) {
     order[i] = keyed[i].second;
     const Triangle& t = triangles[order[i]];
@@ -560,7 +555,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   bvh.extent = box.extent();
   // Every split leaves both sides non-empty, so there are at most n leaves and 2n − 1 nodes:
   // reserved once, so that each level's nodes are written in place, in parallel.
-  detail::reserve_huge(bvh.nodes, 2 * n - 1);
+  bvh.nodes.reserve(2 * n - 1);
   std::size_t used = 1;
 
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};

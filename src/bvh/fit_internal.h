@@ -38,20 +38,6 @@ inline void prefetch(const TriInfo* record) {
 #endif
 }
 
-/// Asks the kernel to back the 2 MiB-aligned part of a buffer with transparent huge pages, before
-/// its first touch: a 1.3M-triangle build touches ~650 MB of fresh memory, and with 4 KiB pages
-/// the page faults alone were ~15 % of its time. Advice only; a no-op off Linux and for buffers
-/// under 4 MiB.
-void advise_huge_pages(const void* data, std::size_t bytes);
-
-/// `v.reserve(n)` with huge-page advice for the new buffer.
-template <class T>
-void reserve_huge(std::vector<T>& v, std::size_t n) {
-  if (v.capacity() >= n) return;
-  v.reserve(n);
-  advise_huge_pages(v.data(), v.capacity() * sizeof(T));
-}
-
 /// ε = 1e-12 · L² for a box diagonal L (SPEC §2.1: scale-aware degeneracy threshold).
 inline double epsilon_for_extent(double extent) { return 1e-12 * extent * extent; }
 

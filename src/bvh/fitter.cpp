@@ -270,7 +270,7 @@ Rss make_rss(const RectExtents& e, const Mat3& axes, const Vec3& origin) {
 void project_vertices(const TriInfo* info, const std::uint32_t* ids, std::size_t n, const Mat3& axes,
                       const Vec3& origin, std::vector<Vec3>& out, Vec3* lo, Vec3* hi) {
   const Mat3 at = axes.transpose();
-  reserve_huge(out, 3 * n);
+  out.reserve(3 * n);
   out.resize(3 * n);
   Vec3 box_lo = Vec3::Constant(std::numeric_limits<double>::infinity()), box_hi = -box_lo;
   for (std::size_t j = 0; j < n; ++j) {
