@@ -132,6 +132,51 @@ TEST(PlanCompareJson, SeedRunsReadBackAndTheirMedianCountsSeedZero) {
   EXPECT_EQ(row().seeds_verdict(), "");
 }
 
+TEST(PlanCompareJson, SearchPhaseMediansBesideTheWholePlanAndOverSeeds) {
+  CompareRow r = row();
+  // swept ms: the median of 11 and 12 is 11.5; the search phases of three runs 7, 8 and 6 ms:
+  // median 7, 61 % of 11.5. OMPL's median is 200 ms (100, 200 at the limit, 300): 200 / 7.
+  r.main_search_ms = {7.0, 8.0, 6.0};
+  EXPECT_EQ(r.swept_search_median(), 7.0);
+  // Seeds 1-3 searched 20, 5 and 9 ms: with seed 0's 7, the median of 7, 20, 5, 9 is 8.
+  r.seed_runs = {{.seed = 1, .status = PlanStatus::solved, .ms = 40.0, .search_ms = 20.0},
+                 {.seed = 2, .status = PlanStatus::solved, .ms = 9.0, .search_ms = 5.0},
+                 {.seed = 3, .status = PlanStatus::solved, .ms = 30.0, .search_ms = 9.0}};
+  EXPECT_EQ(r.swept_seeds_search_median(), 8.0);
+  const CompareOptions o{.time_limit = 10, .seeds = 4, .threads = 2, .swept_seeds = true};
+  const nlohmann::json j = to_json({r}, o);
+  EXPECT_EQ(j["problems"][0]["swept_search_median_ms"], 7.0);
+  EXPECT_EQ(j["problems"][0]["ratio_ompl_median_over_swept_search"], 200.0 / 7.0);
+  EXPECT_EQ(j["problems"][0]["swept_seeds_search_median_ms"], 8.0);
+  EXPECT_EQ(j["problems"][0]["ratio_ompl_median_over_swept_seeds_search"], 25.0);
+  const auto back = rows_from_json(nlohmann::json::parse(j.dump()));
+  EXPECT_EQ(back[0].main_search_ms, r.main_search_ms);
+  EXPECT_EQ(back[0].seed_runs[1].search_ms, 5.0);
+  EXPECT_EQ(back[0].swept_seeds_search_median(), 8.0);
+  testing::internal::CaptureStdout();
+  print_tables({r}, o);
+  const std::string out = testing::internal::GetCapturedStdout();
+  const std::size_t at = out.find("To the first path");
+  ASSERT_NE(at, std::string::npos) << out;
+  const std::string line = out.substr(out.find("t_slot", at), out.find('\n', out.find("t_slot", at)) - out.find("t_slot", at));
+  EXPECT_NE(line.find(" 7.0 "), std::string::npos) << line;
+  EXPECT_NE(line.find(" 61% "), std::string::npos) << line;
+  EXPECT_NE(line.find(" 28.57 "), std::string::npos) << line;
+  EXPECT_NE(line.find(" 8.0 "), std::string::npos) << line;
+  EXPECT_NE(line.find(" 25.00"), std::string::npos) << line;
+
+  // A JSON written before the search phases were kept: no figures, and no table.
+  nlohmann::json old = j;
+  old["problems"][0].erase("swept_main_search_runs_ms");
+  for (auto& s : old["problems"][0]["swept_seed_runs"]) s.erase("search_ms");
+  const auto before = rows_from_json(old);
+  EXPECT_TRUE(std::isnan(before[0].swept_search_median()));
+  EXPECT_TRUE(std::isnan(before[0].swept_seeds_search_median()));
+  testing::internal::CaptureStdout();
+  print_tables(before, o);
+  EXPECT_EQ(testing::internal::GetCapturedStdout().find("To the first path"), std::string::npos);
+}
+
 TEST(PlanCompareJson, StatusWordsReadBack) {
   for (const PlanStatus s : {PlanStatus::solved, PlanStatus::no_path_time, PlanStatus::no_path_budget, PlanStatus::no_path_bounds,
                              PlanStatus::no_path_resolution, PlanStatus::invalid_start, PlanStatus::invalid_goal,

@@ -67,9 +67,9 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
       if (i == 0) main_scene = std::move(*scene);
     }
     const SweptRun& s = row.swept.back();
-    std::fprintf(stderr, "  swept %-8s %-22s plan %10.1f ms  build %7.1f ms  waypoints %zu  length %.4g\n",
+    std::fprintf(stderr, "  swept %-8s %-22s plan %10.1f ms  search %8.1f ms  build %7.1f ms  waypoints %zu  length %.4g\n",
                  std::string(to_string(s.fitter)).c_str(), std::string(status_name(s.result.status)).c_str(), s.plan_ms,
-                 s.build_ms, s.result.path.poses.size(), s.result.path_length);
+                 s.result.time_ms.search, s.build_ms, s.result.path.poses.size(), s.result.path_length);
   }
   // More runs of the problem's fitter, as many in all as OMPL gets seeds (at least two): the
   // median time, and every run must give the same path.
@@ -77,10 +77,12 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
   auto same = [&](const PlanResult& r) { return r.status == first.status && r.path_hash == first.path_hash; };
   row.deterministic = same(row.swept[1].result);
   row.main_ms = {row.swept[0].plan_ms, row.swept[1].plan_ms};
+  row.main_search_ms = {row.swept[0].result.time_ms.search, row.swept[1].result.time_ms.search};
   // (A run that ends on the time limit is not repeated: its median is the limit anyway.)
   for (int k = 2; first.status != PlanStatus::no_path_time && k < seeds; ++k) {
     const SweptRun again = run_swept(c.problem, *main_scene, c.problem.build.fitter, limit, threads);
     row.main_ms.push_back(again.plan_ms);
+    row.main_search_ms.push_back(again.result.time_ms.search);
     row.deterministic = row.deterministic && same(again.result);
   }
   if (first.solved()) {  // as `swept check` would: the path against the problem, apart from the planner
@@ -101,11 +103,12 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
       Problem seeded = c.problem;
       seeded.seed = static_cast<std::uint64_t>(k);
       const SweptRun s = run_swept(seeded, *main_scene, c.problem.build.fitter, limit, threads);
-      SeedRun run{.seed = seeded.seed, .status = s.result.status, .ms = s.plan_ms, .path_hash = s.result.path_hash};
+      SeedRun run{.seed = seeded.seed, .status = s.result.status, .ms = s.plan_ms, .path_hash = s.result.path_hash,
+                  .search_ms = s.result.time_ms.search};
       if (s.result.solved()) run.checked = check_path(seeded, *main_scene, s.result.path).valid;
       row.seed_runs.push_back(run);
-      std::fprintf(stderr, "  swept seed %-3d %-22s plan %10.1f ms  waypoints %zu%s\n", k, std::string(status_name(s.result.status)).c_str(),
-                   s.plan_ms, s.result.path.poses.size(), !run.checked ? "" : *run.checked ? "  check: valid" : "  check: NOT VALID");
+      std::fprintf(stderr, "  swept seed %-3d %-22s plan %10.1f ms  search %8.1f ms  waypoints %zu%s\n", k,
+                   std::string(status_name(s.result.status)).c_str(), s.plan_ms, s.result.time_ms.search, s.result.path.poses.size(), !run.checked ? "" : *run.checked ? "  check: valid" : "  check: NOT VALID");
     }
   }
   row.body_triangles = main_scene->body.triangles.size();

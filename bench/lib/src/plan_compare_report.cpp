@@ -17,6 +17,32 @@ std::string fmt(double v, int prec = 1) {
   return buf;
 }
 
+// swept's search phase beside RRTConnect's solve: each planner's time to its first path, before
+// either smooths it (rows read from a JSON written before 2026-11-29 have no search times).
+void print_search_table(const std::vector<CompareRow>& rows) {
+  const bool seeds = std::any_of(rows.begin(), rows.end(), [](const CompareRow& r) { return !r.seed_runs.empty(); });
+  if (std::none_of(rows.begin(), rows.end(), [](const CompareRow& r) { return r.error.empty() && !r.main_search_ms.empty(); }))
+    return;
+  std::printf("\nTo the first path: swept's search phase (every motion certified; before its smoothing and final "
+              "certification) beside RRTConnect's solve (its raw path)\n");
+  std::printf("%-18s %11s %11s %11s %8s", "problem", "search ms", "of swept ms", "OMPL ms", "ratio");
+  if (seeds) std::printf(" %17s %8s", "search over seeds", "ratio");
+  std::printf("\n");
+  for (const CompareRow& r : rows) {
+    if (!r.error.empty() || r.main_search_ms.empty()) continue;
+    const double search = r.swept_search_median();
+    std::printf("%-18s %11s %10s%% %11s %8s", r.name.c_str(), fmt(search).c_str(),
+                fmt(100.0 * search / std::max(r.swept_median(), 1e-9), 0).c_str(), fmt(r.ompl_median()).c_str(),
+                fmt(r.ompl_median() / std::max(search, 1e-9), 2).c_str());
+    if (seeds && !r.seed_runs.empty())
+      std::printf(" %17s %8s", fmt(r.swept_seeds_search_median()).c_str(),
+                  fmt(r.ompl_median() / std::max(r.swept_seeds_search_median(), 1e-9), 2).c_str());
+    std::printf("\n");
+  }
+  std::printf("search ms: median over the same runs as swept ms; of swept ms: its share of them; ratio: OMPL median / "
+              "search ms. The goal columns above use swept ms, smoothing and final certification included.\n");
+}
+
 }  // namespace
 
 void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) {
@@ -53,6 +79,7 @@ void print_tables(const std::vector<CompareRow>& rows, const CompareOptions& o) 
               "motion check finds in contact between OMPL's discrete motion samples (raw path / simplified path); "
               "+simplify: median of OMPL's solve + its simplifySolution() (swept ms include swept's smoothing); "
               "ratio: OMPL median / swept ms (the goal's figure); ratio+s: OMPL +simplify / swept ms.\n");
+  print_search_table(rows);
   std::printf("\nswept per fitter (plan ms of the first run without the tree build; build ms; status) and determinism\n");
   std::printf("%-18s", "problem");
   for (const FitterInfo& f : all_fitters()) std::printf(" %28s", std::string(f.name).c_str());

@@ -33,6 +33,17 @@ double CompareRow::swept_seeds_median() const {
   return median(std::move(t));
 }
 
+double CompareRow::swept_search_median() const {
+  return main_search_ms.empty() ? std::numeric_limits<double>::quiet_NaN() : median(main_search_ms);
+}
+
+double CompareRow::swept_seeds_search_median() const {
+  if (seed_runs.empty() || main_search_ms.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> t{swept_search_median()};
+  for (const SeedRun& s : seed_runs) t.push_back(s.search_ms);
+  return median(std::move(t));
+}
+
 int CompareRow::swept_seeds_solved() const {
   return static_cast<int>(main().result.solved()) +
          static_cast<int>(std::count_if(seed_runs.begin(), seed_runs.end(), [](const SeedRun& s) { return s.status == PlanStatus::solved; }));
@@ -159,6 +170,10 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
     }
     p["swept_main_runs_ms"] = r.main_ms;
     p["swept_median_ms"] = r.swept_median();
+    if (!r.main_search_ms.empty()) {
+      p["swept_main_search_runs_ms"] = r.main_search_ms;
+      p["swept_search_median_ms"] = r.swept_search_median();
+    }
     if (!r.seed_runs.empty()) {
       for (const SeedRun& s : r.seed_runs) {
         char hash[32];
@@ -167,10 +182,12 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
                                         {"status", std::string(status_name(s.status))},
                                         {"plan_ms", s.ms},
                                         {"path_hash", hash},
-                                        {"path_checked", s.checked ? nlohmann::json(*s.checked) : nlohmann::json(nullptr)}});
+                                        {"path_checked", s.checked ? nlohmann::json(*s.checked) : nlohmann::json(nullptr)},
+                                        {"search_ms", s.search_ms}});
       }
       p["swept_seeds_solved"] = r.swept_seeds_solved();
       p["swept_seeds_median_ms"] = r.swept_seeds_median();
+      if (!r.main_search_ms.empty()) p["swept_seeds_search_median_ms"] = r.swept_seeds_search_median();
     }
     p["ompl_fcl_build_ms"] = r.ompl_fcl_build_ms;
     for (const OmplRun& o : r.ompl)
@@ -192,6 +209,10 @@ nlohmann::json to_json(const std::vector<CompareRow>& rows, const CompareOptions
     p["ompl_median_with_simplify_ms"] = r.ompl_median_with_simplify();
     p["ratio_ompl_median_over_swept"] = r.ompl_median() / std::max(r.swept_median(), 1e-9);
     p["ratio_ompl_median_with_simplify_over_swept"] = r.ompl_median_with_simplify() / std::max(r.swept_median(), 1e-9);
+    if (!r.main_search_ms.empty())
+      p["ratio_ompl_median_over_swept_search"] = r.ompl_median() / std::max(r.swept_search_median(), 1e-9);
+    if (!r.seed_runs.empty() && !r.main_search_ms.empty())
+      p["ratio_ompl_median_over_swept_seeds_search"] = r.ompl_median() / std::max(r.swept_seeds_search_median(), 1e-9);
     if (!r.seed_runs.empty()) {
       p["ratio_ompl_median_over_swept_seeds"] = r.ompl_median() / std::max(r.swept_seeds_median(), 1e-9);
       p["goal_over_seeds"] = r.seeds_verdict();
@@ -243,6 +264,7 @@ std::vector<CompareRow> rows_from_json(const nlohmann::json& j) {
       r.one_thread_ms = one.value("plan_ms", nan);
     }
     r.main_ms = p.value("swept_main_runs_ms", std::vector<double>{});
+    r.main_search_ms = p.value("swept_main_search_runs_ms", std::vector<double>{});  // absent before 2026-11-29
     for (const auto& s : p.value("swept_seed_runs", nlohmann::json::array())) {  // with --swept-seeds
       SeedRun run;
       run.seed = s.value("seed", std::uint64_t{0});
@@ -250,6 +272,7 @@ std::vector<CompareRow> rows_from_json(const nlohmann::json& j) {
       run.ms = s.value("plan_ms", nan);
       run.path_hash = std::stoull(s.value("path_hash", std::string("0")), nullptr, 16);
       if (s.contains("path_checked") && !s["path_checked"].is_null()) run.checked = s["path_checked"].get<bool>();
+      run.search_ms = s.value("search_ms", nan);
       r.seed_runs.push_back(run);
     }
     r.ompl_fcl_build_ms = p.value("ompl_fcl_build_ms", nan);

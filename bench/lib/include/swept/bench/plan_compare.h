@@ -54,6 +54,7 @@ struct SeedRun {
   double ms = 0.0;
   std::uint64_t path_hash = 0;
   std::optional<bool> checked;  ///< check_path of its path; unset when not solved
+  double search_ms = 0.0;       ///< its search phase (PlanResult::time_ms.search)
 };
 
 struct SweptRun {
@@ -107,6 +108,10 @@ struct CompareRow {
   /// plan() times of every run of the problem's fitter (swept is deterministic: the same path
   /// each time, so repeats measure the timing spread only).
   std::vector<double> main_ms;
+  /// The search phase of each of those runs (PlanResult::time_ms.search): the time to swept's
+  /// first path, every motion of it certified, before smoothing and the final certification.
+  /// RRTConnect's solve time is the like-for-like figure: the time to its raw path.
+  std::vector<double> main_search_ms;
   /// CompareOptions::swept_seeds: the runs with seeds 1 … seeds − 1 (empty when not asked).
   std::vector<SeedRun> seed_runs;
 
@@ -119,6 +124,11 @@ struct CompareRow {
   /// time (the limit, when that stopped it), as ompl_median() counts OMPL's failures; NaN
   /// without seed runs.
   double swept_seeds_median() const;
+  /// Median of main_search_ms; NaN without them (bench_plan JSON written before 2026-11-29).
+  double swept_search_median() const;
+  /// Median over seed 0 (swept_search_median()) and the seed runs' search phases; NaN without
+  /// seed runs or without seed 0's search times.
+  double swept_seeds_search_median() const;
   /// Seed runs solved, seed 0 included.
   int swept_seeds_solved() const;
   int ompl_colliding() const;
