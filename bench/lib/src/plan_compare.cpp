@@ -108,7 +108,8 @@ CompareRow run_case(const PlanCase& c, const CompareOptions& o) {
       if (s.result.solved()) run.checked = check_path(seeded, *main_scene, s.result.path).valid;
       row.seed_runs.push_back(run);
       std::fprintf(stderr, "  swept seed %-3d %-22s plan %10.1f ms  search %8.1f ms  waypoints %zu%s\n", k,
-                   std::string(status_name(s.result.status)).c_str(), s.plan_ms, s.result.time_ms.search, s.result.path.poses.size(), !run.checked ? "" : *run.checked ? "  check: valid" : "  check: NOT VALID");
+                   std::string(status_name(s.result.status)).c_str(), s.plan_ms, s.result.time_ms.search,
+                   s.result.path.poses.size(), !run.checked ? "" : *run.checked ? "  check: valid" : "  check: NOT VALID");
     }
   }
   row.body_triangles = main_scene->body.triangles.size();

@@ -5,6 +5,7 @@
 #include "swept/bench/timing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -26,22 +27,27 @@ double median(std::vector<double> t) {
 
 double CompareRow::swept_median() const { return main_ms.empty() ? main().plan_ms : median(main_ms); }
 
-double CompareRow::swept_seeds_median() const {
-  if (seed_runs.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> t{swept_median()};
-  for (const SeedRun& s : seed_runs) t.push_back(s.ms);
+namespace {
+
+/// Median of seed 0's figure and one field of every seed run; NaN without seed runs or without
+/// seed 0's figure (NaN).
+double over_seeds(double seed_zero, const std::vector<SeedRun>& runs, double SeedRun::*field) {
+  if (runs.empty() || std::isnan(seed_zero)) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> t{seed_zero};
+  for (const SeedRun& s : runs) t.push_back(s.*field);
   return median(std::move(t));
 }
+
+}  // namespace
+
+double CompareRow::swept_seeds_median() const { return over_seeds(swept_median(), seed_runs, &SeedRun::ms); }
 
 double CompareRow::swept_search_median() const {
   return main_search_ms.empty() ? std::numeric_limits<double>::quiet_NaN() : median(main_search_ms);
 }
 
 double CompareRow::swept_seeds_search_median() const {
-  if (seed_runs.empty() || main_search_ms.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> t{swept_search_median()};
-  for (const SeedRun& s : seed_runs) t.push_back(s.search_ms);
-  return median(std::move(t));
+  return over_seeds(swept_search_median(), seed_runs, &SeedRun::search_ms);
 }
 
 int CompareRow::swept_seeds_solved() const {
