@@ -10,8 +10,15 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <numbers>
@@ -90,6 +97,27 @@ void encode_rss(const Rss& rss, const Vec3& origin, Node& node) {
 namespace {
 
 using detail::TriInfo;
+
+// Maps the pages of [data, data + bytes) in, on every core: the kernel's first-touch work
+// (a fault and a cleared page per 4 KiB) is otherwise done by whichever thread first writes
+// the memory, and for the builder's largest buffers that was a serial loop. Best effort: a
+// kernel without MADV_POPULATE_WRITE (before Linux 5.14) leaves the pages to the first write.
+void prefault([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes, [[maybe_unused]] bool parallel) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  constexpr std::size_t kMin = std::size_t{8} << 20;  // smaller buffers: not worth the calls
+  if (!parallel || data == nullptr || bytes < kMin) return;
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + page - 1) / page * page;
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) / page * page;
+  if (end <= begin) return;
+  constexpr std::uintptr_t kChunk = std::uintptr_t{2} << 20;
+  const std::size_t chunks = (end - begin + kChunk - 1) / kChunk;
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    const std::uintptr_t from = begin + c * kChunk, to = std::min(end, from + kChunk);
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+  });
+#endif
+}
 
 // Interleaves the low 21 bits of x, y and z (clamped cell coordinates) into a 63-bit Morton code.
 std::uint64_t morton_code(const Vec3& cell) {
@@ -411,10 +439,13 @@ constexpr double kMaxCoordinate = 1e30;
 // its coordinates are equal bit for bit, so every triangle reads back exactly. Vertices are
 // numbered in order of first use, so the vertices of neighbouring leaves lie close in memory.
 // An open-addressing table of vertex indices, keyed by a hash of the coordinates' bits.
-void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>& ids, IndexedTriangles& out) {
+void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>& ids, IndexedTriangles& out,
+          bool parallel) {
   const std::size_t n = ids.size();
   out.vertices.clear();
   out.corners.clear();
+  out.corners.reserve(n);
+  prefault(out.corners.data(), n * sizeof(out.corners[0]), parallel);
   out.corners.resize(n);
   // Closed meshes have about n / 2 vertices: the table starts with room for them at half load
   // and doubles when it is half full (a table for the worst case, 3n, spent its time in cache
@@ -424,6 +455,8 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> table(slots, kEmpty);
   std::vector<Vec3> vertices;
+  vertices.reserve(n);  // closed meshes: about n / 2
+  prefault(vertices.data(), n * sizeof(Vec3), parallel);
   auto hash = [](const Vec3& v) {
     std::uint64_t k[3];
     std::memcpy(k, v.data(), sizeof(k));
@@ -487,6 +520,7 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   std::vector<std::uint32_t>().swap(table);
   // Exactly as many as used (the working array grew by doubling).
   out.vertices.reserve(vertices.size());
+  prefault(out.vertices.data(), vertices.size() * sizeof(Vec3), parallel);
   out.vertices.assign(vertices.begin(), vertices.end());
 }
 
@@ -525,7 +559,10 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   // lie close together in memory (on a 1.3M-triangle CAD mesh this alone makes the build about
   // a quarter faster than in the file's order). The order is a total one (ties by input index),
   // so the tree is still a function of the input alone.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+  keyed.reserve(n);
+  prefault(keyed.data(), n * sizeof(keyed[0]), config.parallel);
+  keyed.resize(n);
   const Vec3 size = box.max - box.min;
   const Vec3 cells = Vec3::NullaryExpr([&](Eigen::Index k) { return size[k] > 0.0 ? 2097151.0 / size[k] : 0.0; });
   for_each_index([&](std::size_t i) {
@@ -539,7 +576,10 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     std::sort(keyed.begin(), keyed.end());
   }
   std::vector<std::uint32_t> order(n);
-  std::vector<TriInfo> info(n);
+  std::vector<TriInfo> info;
+  info.reserve(n);
+  prefault(info.data(), n * sizeof(TriInfo), config.parallel);
+  info.resize(n);
   for_each_index([&](std::size_t i) {
     order[i] = keyed[i].second;
     const Triangle& t = triangles[order[i]];
@@ -556,6 +596,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   // Every split leaves both sides non-empty, so there are at most n leaves and 2n − 1 nodes:
   // reserved once, so that each level's nodes are written in place, in parallel.
   bvh.nodes.reserve(2 * n - 1);
+  prefault(bvh.nodes.data(), (2 * n - 1) * sizeof(Node), config.parallel);
   std::size_t used = 1;
 
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
@@ -579,6 +620,17 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     bvh.nodes.resize(used);
     outcomes.assign(level.size(), Outcome{});
     level_rss.resize(level.size());
+    if (level.size() == 1 && config.parallel) {
+      // The root is processed on this thread: its projections' buffers, mapped in on every core.
+      Scratch& s = builder.scratch.local();
+      const std::size_t count = 3 * static_cast<std::size_t>(level[0].end - level[0].begin);
+      for (std::vector<Vec3>* buffer : {&s.projected, &s.child_projected}) {
+        if (buffer == &s.child_projected && config.split != SplitRule::min_sa) continue;
+        if (buffer->capacity() >= count) continue;
+        buffer->reserve(count);
+        prefault(buffer->data(), count * sizeof(Vec3), true);
+      }
+    }
     auto run = [&](const tbb::blocked_range<std::size_t>& range) {
       Scratch& s = builder.scratch.local();
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -616,7 +668,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   bvh.root = bvh.bv(0);
   bvh.triangle_ids.resize(n);
   for_each_index([&](std::size_t i) { bvh.triangle_ids[i] = order[ids[i]]; });
-  weld(triangles, bvh.triangle_ids, bvh.triangles);
+  weld(triangles, bvh.triangle_ids, bvh.triangles, config.parallel);
   return bvh;
 }
 
