@@ -455,8 +455,8 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> table(slots, kEmpty);
   std::vector<Vec3> vertices;
-  vertices.reserve(n);  // closed meshes: about n / 2
-  prefault(vertices.data(), n * sizeof(Vec3), parallel);
+  vertices.reserve(n);  // closed meshes have about n / 2: those pages mapped in now
+  prefault(vertices.data(), n / 2 * sizeof(Vec3), parallel);
   auto hash = [](const Vec3& v) {
     std::uint64_t k[3];
     std::memcpy(k, v.data(), sizeof(k));
@@ -624,11 +624,12 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
       // The root is processed on this thread: its projections' buffers, mapped in on every core.
       Scratch& s = builder.scratch.local();
       const std::size_t count = 3 * static_cast<std::size_t>(level[0].end - level[0].begin);
+      // min-sa's candidate sides: the larger side of a candidate has at least half of them.
+      const bool sides = config.split == SplitRule::min_sa;
       for (std::vector<Vec3>* buffer : {&s.projected, &s.child_projected}) {
-        if (buffer == &s.child_projected && config.split != SplitRule::min_sa) continue;
-        if (buffer->capacity() >= count) continue;
+        if ((buffer == &s.child_projected && !sides) || buffer->capacity() >= count) continue;
         buffer->reserve(count);
-        prefault(buffer->data(), count * sizeof(Vec3), true);
+        prefault(buffer->data(), (buffer == &s.projected ? count : count / 2) * sizeof(Vec3), true);
       }
     }
     auto run = [&](const tbb::blocked_range<std::size_t>& range) {
