@@ -457,8 +457,9 @@ TEST_P(QueryOracle, LongSearchesMatchBruteForce) {
   EXPECT_GT(longest, past_best_first) << "no pose reached the depth-first phase";
 }
 
-// The distance search reuses a per-thread buffer for its waiting pairs: a search started from
-// inside another on the same thread (here from a pair rule) must not disturb the outer one.
+// The distance search reuses per-thread buffers for its waiting pairs and its decoded nodes: a
+// search started from inside another on the same thread (here from a pair rule) must not disturb
+// the outer one, which must test the very node pairs it tests with a rule that starts nothing.
 TEST(QueryEdgeCases, NestedDistanceSearchesOnOneThread) {
   Rng rng(5);
   const auto ta = bumpy_plate(rng, 20, 0.3);
@@ -478,9 +479,13 @@ TEST(QueryEdgeCases, NestedDistanceSearchesOnOneThread) {
     }
     return false;  // leaves every pair in
   };
+  const std::function<bool(std::uint32_t, std::uint32_t)> quiet = [](std::uint32_t, std::uint32_t) { return false; };
   const DistanceResult plain = distance(a, Pose::identity(), b, pb);
+  const DistanceResult with_quiet_rule = distance(a, Pose::identity(), b, pb, {.exclude_if = &quiet});
   const DistanceResult with_rule = distance(a, Pose::identity(), b, pb, {.exclude_if = &rule});
   EXPECT_GT(nested, 0);
+  EXPECT_EQ(with_rule.stats.bv_tests, with_quiet_rule.stats.bv_tests);
+  EXPECT_EQ(with_rule.stats.triangle_tests, with_quiet_rule.stats.triangle_tests);
   EXPECT_TRUE(inner_same);
   EXPECT_EQ(with_rule.distance, plain.distance);
   EXPECT_EQ(with_rule.triangle_a, plain.triangle_a);
