@@ -153,47 +153,10 @@ struct DistanceSearch {
     return detail::lower_bound(na, pb, prune_level() + radii, enough < best_level) - radii;
   }
 
-  /// Nodes of A decoded and nodes of B placed, by index, for this search: each is decoded once
-  /// however many pairs it meets (far apart on the KUKA pair a query meets each node of A it
-  /// decodes 3.7 times and each node of B it places 5.5 times). Direct-mapped slots, the thread's,
-  /// reused from search to search (a slot holds a node of the search that numbered it) and taken
-  /// out while in use, so a nested search on the same thread gets its own.
-  struct Decoded {
-    static constexpr std::size_t kSlots = 256;
-    struct SlotA {
-      std::uint64_t search = 0;
-      std::int32_t node = -1;
-      Rss rss;
-    };
-    struct SlotB {
-      std::uint64_t search = 0;
-      std::int32_t node = -1;
-      detail::PlacedRss placed;
-    };
-    std::uint64_t searches = 0;
-    std::array<SlotA, kSlots> a;
-    std::array<SlotB, kSlots> b;
-  };
-  Decoded* decoded = nullptr;
-  std::uint64_t search_id = 0;
-  const Rss& node_of_a(std::int32_t i) {
-    Decoded::SlotA& slot = decoded->a[static_cast<std::size_t>(i) & (Decoded::kSlots - 1)];
-    if (slot.search != search_id || slot.node != i) {
-      slot.search = search_id;
-      slot.node = i;
-      slot.rss = a.bv(static_cast<std::size_t>(i));
-    }
-    return slot.rss;
-  }
-  detail::PlacedRss& placed_of_b(std::int32_t i) {
-    Decoded::SlotB& slot = decoded->b[static_cast<std::size_t>(i) & (Decoded::kSlots - 1)];
-    if (slot.search != search_id || slot.node != i) {
-      slot.search = search_id;
-      slot.node = i;
-      slot.placed = detail::place(b, i, rel);
-    }
-    return slot.placed;
-  }
+  /// The nodes this search decoded (detail::DecodedNodes), set by run().
+  detail::DecodedNodes* decoded = nullptr;
+  const Rss& node_of_a(std::int32_t i) { return decoded->a(i); }
+  detail::PlacedRss& placed_of_b(std::int32_t i) { return decoded->b(i); }
 
   void leaves(const Node& na, const Node& nb) {
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
@@ -232,20 +195,16 @@ struct DistanceSearch {
     if (prune(root)) return;
     // The waiting pairs: a heap while best first, then a stack (its back on top). The buffer is
     // the thread's, reused from query to query; taken out while in use, so a nested search on
-    // the same thread gets its own. The same for the decoded nodes.
+    // the same thread gets its own (as do the decoded nodes).
     thread_local std::vector<detail::PairEntry> spare;
-    thread_local std::unique_ptr<Decoded> spare_decoded;
     std::vector<detail::PairEntry> waiting = std::exchange(spare, {});
-    std::unique_ptr<Decoded> mine = std::exchange(spare_decoded, nullptr);
-    if (!mine) mine = std::make_unique<Decoded>();
-    decoded = mine.get();
-    search_id = ++mine->searches;
-    mine->a[0] = {search_id, 0, root_a};
-    mine->b[0] = {search_id, 0, root_b};
+    detail::DecodedNodes nodes(a, b, rel);
+    nodes.seed(root_a, root_b);
+    decoded = &nodes;
     waiting.clear();
     run(root, waiting);
+    decoded = nullptr;
     spare = std::move(waiting);
-    spare_decoded = std::move(mine);
   }
 
   void run(double root, std::vector<detail::PairEntry>& waiting) {
@@ -315,8 +274,8 @@ struct DistanceSearch {
         }
         continue;
       }
-      // Each test decodes only the child it is about, and only if this search has not yet (the
-      // decoded slots above).
+      // Each test decodes only the child it is about, and only if this search has not yet
+      // (detail::DecodedNodes).
       double d0, d1;
       if (split_a) {
         detail::PlacedRss& placed = placed_of_b(e.b);
