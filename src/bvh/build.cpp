@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <numbers>
@@ -117,6 +116,13 @@ void prefault([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t by
     madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
   });
 #endif
+}
+
+// Room for `capacity` elements in `v`, the pages of its first `mapped` mapped in (prefault).
+template <class T>
+void reserve_mapped(std::vector<T>& v, std::size_t capacity, std::size_t mapped, bool parallel) {
+  v.reserve(capacity);
+  prefault(v.data(), std::min(mapped, v.capacity()) * sizeof(T), parallel);
 }
 
 // Interleaves the low 21 bits of x, y and z (clamped cell coordinates) into a 63-bit Morton code.
@@ -444,8 +450,7 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   const std::size_t n = ids.size();
   out.vertices.clear();
   out.corners.clear();
-  out.corners.reserve(n);
-  prefault(out.corners.data(), n * sizeof(out.corners[0]), parallel);
+  reserve_mapped(out.corners, n, n, parallel);
   out.corners.resize(n);
   // Closed meshes have about n / 2 vertices: the table starts with room for them at half load
   // and doubles when it is half full (a table for the worst case, 3n, spent its time in cache
@@ -455,8 +460,7 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> table(slots, kEmpty);
   std::vector<Vec3> vertices;
-  vertices.reserve(n);  // closed meshes have about n / 2: those pages mapped in now
-  prefault(vertices.data(), n / 2 * sizeof(Vec3), parallel);
+  reserve_mapped(vertices, n, n / 2, parallel);  // closed meshes have about n / 2
   auto hash = [](const Vec3& v) {
     std::uint64_t k[3];
     std::memcpy(k, v.data(), sizeof(k));
@@ -519,8 +523,7 @@ void weld(std::span<const Triangle> triangles, const std::vector<std::uint32_t>&
   }
   std::vector<std::uint32_t>().swap(table);
   // Exactly as many as used (the working array grew by doubling).
-  out.vertices.reserve(vertices.size());
-  prefault(out.vertices.data(), vertices.size() * sizeof(Vec3), parallel);
+  reserve_mapped(out.vertices, vertices.size(), vertices.size(), parallel);
   out.vertices.assign(vertices.begin(), vertices.end());
 }
 
@@ -560,8 +563,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   // a quarter faster than in the file's order). The order is a total one (ties by input index),
   // so the tree is still a function of the input alone.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
-  keyed.reserve(n);
-  prefault(keyed.data(), n * sizeof(keyed[0]), config.parallel);
+  reserve_mapped(keyed, n, n, config.parallel);
   keyed.resize(n);
   const Vec3 size = box.max - box.min;
   const Vec3 cells = Vec3::NullaryExpr([&](Eigen::Index k) { return size[k] > 0.0 ? 2097151.0 / size[k] : 0.0; });
@@ -577,8 +579,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   }
   std::vector<std::uint32_t> order(n);
   std::vector<TriInfo> info;
-  info.reserve(n);
-  prefault(info.data(), n * sizeof(TriInfo), config.parallel);
+  reserve_mapped(info, n, n, config.parallel);
   info.resize(n);
   for_each_index([&](std::size_t i) {
     order[i] = keyed[i].second;
@@ -595,8 +596,7 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   bvh.extent = box.extent();
   // Every split leaves both sides non-empty, so there are at most n leaves and 2n − 1 nodes:
   // reserved once, so that each level's nodes are written in place, in parallel.
-  bvh.nodes.reserve(2 * n - 1);
-  prefault(bvh.nodes.data(), (2 * n - 1) * sizeof(Node), config.parallel);
+  reserve_mapped(bvh.nodes, 2 * n - 1, 2 * n - 1, config.parallel);
   std::size_t used = 1;
 
   std::vector<Pending> level{Pending{0, 0, static_cast<std::uint32_t>(n)}};
@@ -605,6 +605,13 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
   std::vector<Pending> next;
   std::vector<std::size_t> subtree_base;  // 0: not a subtree root (index 0 is the tree's root)
   int max_depth = 0;
+  {
+    // The root, one node, is processed on this thread: its projections' buffers mapped in on
+    // every core (min-sa's candidate sides too: a candidate's larger side has at least half).
+    Scratch& s = builder.scratch.local();
+    reserve_mapped(s.projected, 3 * n, 3 * n, config.parallel);
+    if (config.split == SplitRule::min_sa) reserve_mapped(s.child_projected, 3 * n, 3 * n / 2, config.parallel);
+  }
   while (!level.empty()) {
     ++bvh.depth;
     // Small nodes get their subtree's block of indices now, in level order.
@@ -620,18 +627,6 @@ Result<Bvh> build_bvh(std::span<const Triangle> triangles, const BuildConfig& co
     bvh.nodes.resize(used);
     outcomes.assign(level.size(), Outcome{});
     level_rss.resize(level.size());
-    if (level.size() == 1 && config.parallel) {
-      // The root is processed on this thread: its projections' buffers, mapped in on every core.
-      Scratch& s = builder.scratch.local();
-      const std::size_t count = 3 * static_cast<std::size_t>(level[0].end - level[0].begin);
-      // min-sa's candidate sides: the larger side of a candidate has at least half of them.
-      const bool sides = config.split == SplitRule::min_sa;
-      for (std::vector<Vec3>* buffer : {&s.projected, &s.child_projected}) {
-        if ((buffer == &s.child_projected && !sides) || buffer->capacity() >= count) continue;
-        buffer->reserve(count);
-        prefault(buffer->data(), (buffer == &s.projected ? count : count / 2) * sizeof(Vec3), true);
-      }
-    }
     auto run = [&](const tbb::blocked_range<std::size_t>& range) {
       Scratch& s = builder.scratch.local();
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
