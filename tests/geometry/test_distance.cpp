@@ -285,6 +285,48 @@ TEST(TrianglesIntersect, AgreesWithOracleDistance) {
   EXPECT_GT(hits, 40);
 }
 
+// triangles_intersect rejects most disjoint pairs by a gap along the cross product of two edges
+// before the full evaluation. Pairs moved to within a few tolerances of touching, along the
+// direction between their closest points (which sets their distance to the chosen gap), must get
+// the verdict of the plain distance test with the tolerance as its limit: a rejection that
+// trusted gaps below twice the tolerance would call some of the pairs at 0.5-0.9 tolerances apart
+// disjoint. The pairs far from the origin have a tolerance far above a unit's rounding.
+TEST(TrianglesIntersect, NearTouchingPairsGetThePlainDistanceVerdict) {
+  Rng rng(4242);
+  int touching = 0, apart = 0;
+  for (const Vec3& o : {Vec3(0, 0, 0), Vec3(3e4, -2e4, 1e4)}) {
+    for (int it = 0; it < 3000; ++it) {
+      const Triangle a{o + rng.vec(-1, 1), o + rng.vec(-1, 1), o + rng.vec(-1, 1)};
+      const Triangle b0{o + rng.vec(-1, 1), o + rng.vec(-1, 1), o + rng.vec(-1, 1)};
+      const TriangleDistance d0 = triangle_distance(a, b0);
+      if (!(d0.distance > 1e-3)) continue;
+      const Vec3 dir = (d0.point_b - d0.point_a) / d0.distance;
+      for (const double g : {0.25, 0.5, 0.9, 1.5, 1.9, 2.1, 2.5, 4.0, 100.0}) {
+        // The tolerance depends on the coordinates: taken where the pair ends up.
+        auto moved = [&](double gap) {
+          const Vec3 shift = (gap - d0.distance) * dir;
+          return Triangle{b0.p + shift, b0.q + shift, b0.r + shift};
+        };
+        const Triangle b = moved(g * touch_tolerance(a, moved(0.0)));
+        const double tol = touch_tolerance(a, b);
+        TriangleDistance d;
+        const bool plain = triangle_distance_below(a, b, std::nextafter(tol, 1e300), d);
+        ASSERT_EQ(triangles_intersect(a, b), plain) << "pair " << it << " at " << g << " tolerances, origin " << o.x();
+        if (g <= 0.9) {
+          EXPECT_TRUE(plain) << it << " " << g;
+          touching += plain;
+        }
+        if (g >= 1.5) {
+          EXPECT_FALSE(plain) << it << " " << g;
+          apart += !plain;
+        }
+      }
+    }
+  }
+  EXPECT_GT(touching, 12000);
+  EXPECT_GT(apart, 20000);
+}
+
 /// Golden-section search of a unimodal function on [0, 1].
 template <class F>
 double golden_min(F f) {
