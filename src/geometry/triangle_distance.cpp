@@ -357,6 +357,12 @@ double touch_tolerance(const Triangle& a, const Triangle& b) {
 
 bool triangles_intersect(const Triangle& ta, const Triangle& tb) {
   const double tol = touch_tolerance(ta, tb);
+  const double limit = std::nextafter(tol, kInf);
+  const double limit_sq = limit * limit;
+  // The cheapest rejections first, before either triangle is prepared: near contact most of the
+  // pairs a collide query tests have bounding boxes apart (510 of 598 a query on the tunnel
+  // console's scene, 15 of 35 on a coarse engine pair).
+  if (centroid_line_or_boxes_apart(ta, tb, limit, limit_sq)) return false;
   // Each triangle is prepared once, for the plane tests and for the distance below.
   Prepared a, b;
   prepare(ta, a);
@@ -373,9 +379,6 @@ bool triangles_intersect(const Triangle& ta, const Triangle& tb) {
     return (d0 > lim && d1 > lim && d2 > lim) || (d0 < -lim && d1 < -lim && d2 < -lim);
   };
   if (separated_by_plane(a, tb) || separated_by_plane(b, ta)) return false;
-  const double limit = std::nextafter(tol, kInf);
-  const double limit_sq = limit * limit;
-  if (centroid_line_or_boxes_apart(ta, tb, limit, limit_sq)) return false;
   // Two disjoint triangles that neither plane separates are separated along the cross product
   // of an edge of each (the separating axis theorem). A gap of more than twice the tolerance
   // along one is a lower bound on the distance far above the projections' rounding (1e-16 of
