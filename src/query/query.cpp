@@ -307,7 +307,8 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   const DistanceSearch* used = &cold;
 
   // Suspects: the first pair below stop_below ends the query, as the search would end at it.
-  if (request.stop_below > -kInf) {
+  // (No distance is below a stop_below of 0 or less.)
+  if (request.stop_below > 0.0) {
     for (const DistanceHint& s : request.suspects) {
       if (!s.valid() || s.a >= a.triangles.size() || s.b >= b.triangles.size() || warm.excluded(s.a, s.b)) continue;
       ++warm.stats.triangle_tests;
@@ -341,8 +342,10 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   // the models are apart (most node pairs are rejected near the root); skipping it after a
   // hint that is not a contact made queries along motions into contact 2.4x slower.
   // (Not with pairs left out: the first contact may be one of them; not when the caller knows
-  // the models apart.)
-  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > -kInf) && !request.apart;
+  // the models apart; not with a stop_below above 0, where the first pair below it ends the
+  // search as a contact would. A stop_below of 0 or less, a clearance of 0 in the planner, is
+  // never reached: only a contact ends such a query early, and this search finds it.)
+  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > 0.0) && !request.apart;
   warm.stop_below = cold.stop_below = request.stop_below;
   std::int32_t ci = -1, cj = -1;
   const CollideResult contact = contact_first ? collide_relative(a, b, rel, {}, &ci, &cj) : CollideResult{};

@@ -215,6 +215,23 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         }
       }
 
+      // A stop_below of 0 or less, which no distance is below (the planner at a clearance of 0),
+      // changes nothing: the same answer, witness and work as without it, the first-contact
+      // search included (it used to be skipped, and a touching pose then cost a distance search).
+      for (const double below : {0.0, -1.0}) {
+        const DistanceRequest plain{.enough = 2.0 * bd.distance + 1.0};
+        DistanceRequest with = plain;
+        with.stop_below = below;
+        const DistanceResult p = distance(a, pa, b, pb, plain);
+        const DistanceResult w = distance(a, pa, b, pb, with);
+        EXPECT_EQ(w.distance, p.distance);
+        EXPECT_EQ(w.exact, p.exact);
+        EXPECT_EQ(w.triangle_a, p.triangle_a);
+        EXPECT_EQ(w.triangle_b, p.triangle_b);
+        EXPECT_EQ(w.stats.bv_tests, p.stats.bv_tests);
+        EXPECT_EQ(w.stats.triangle_tests, p.stats.triangle_tests);
+      }
+
       // Tolerance: either side of the true distance.
       if (bd.distance > 0) {
         const ToleranceResult in = tolerance(a, pa, b, pb, {.tolerance = bd.distance * 1.01});
