@@ -110,18 +110,23 @@ std::string one_line(std::string text) {
 
 // Sums the vertices of every mesh under `node` (all of them, as OMPL.app's extractVertices does:
 // points and lines too), node transformations applied.
-void sum_vertices(const aiScene& scene, const aiNode& node, const Affine& parent, Vec3& sum, std::size_t& count) {
+// Every vertex of every mesh under `node`, node transformations applied (OMPL.app's
+// scene::extractVertices): their sum, count and box.
+void gather_vertices(const aiScene& scene, const aiNode& node, const Affine& parent, Vec3& sum, std::size_t& count,
+                     Aabb& box) {
   const Affine world = compose(parent, to_affine(node.mTransformation));
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
     if (node.mMeshes[m] >= scene.mNumMeshes) continue;  // ValidateDataStructure rejects these first
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D& a = mesh.mVertices[v];
-      sum += world.leftCols<3>() * Vec3(a.x, a.y, a.z) + world.col(3);
+      const Vec3 placed = world.leftCols<3>() * Vec3(a.x, a.y, a.z) + world.col(3);
+      sum += placed;
+      box.extend(placed);
       ++count;
     }
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) sum_vertices(scene, *node.mChildren[c], world, sum, count);
+  for (unsigned c = 0; c < node.mNumChildren; ++c) gather_vertices(scene, *node.mChildren[c], world, sum, count, box);
 }
 
 }  // namespace
@@ -224,7 +229,7 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
   return true;
 }
 
-Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx) {
+Result<OmplAppVertices> ompl_app_vertices_with_assimp(const ReadContext& ctx) {
   if (auto err = precheck(ctx)) return *err;
   try {
     // OMPL.app's RigidBodyGeometry::addRobotMesh reads with exactly these steps (plus the
@@ -244,9 +249,12 @@ Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx) {
     if (scene->mRootNode == nullptr) return file_error(ctx.display, "assimp: the file has no scene graph");
     Vec3 sum = Vec3::Zero();
     std::size_t count = 0;
-    sum_vertices(*scene, *scene->mRootNode, Affine::Identity(), sum, count);
+    Aabb box;
+    gather_vertices(*scene, *scene->mRootNode, Affine::Identity(), sum, count, box);
     if (count == 0) return file_error(ctx.display, "contains no vertices");
-    return Vec3(ctx.file_to_output * sum / static_cast<double>(count));
+    // file_to_output is a positive scale: the box's corners scale with it.
+    return OmplAppVertices{Vec3(ctx.file_to_output * sum / static_cast<double>(count)),
+                           Aabb{ctx.file_to_output * box.min, ctx.file_to_output * box.max}};
   } catch (const std::exception& e) {
     return file_error(ctx.display, "assimp: " + one_line(e.what()));
   }

@@ -31,8 +31,8 @@ Result<bool> read_stl(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 /// OBJ, PLY, OFF, glTF/GLB, COLLADA through assimp.
 Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 
-/// ompl_app_center() for the formats assimp reads (STL too: OMPL.app reads it with assimp).
-Result<Vec3> ompl_app_center_with_assimp(const ReadContext& ctx);
+/// ompl_app_vertices() for the formats assimp reads (STL too: OMPL.app reads it with assimp).
+Result<OmplAppVertices> ompl_app_vertices_with_assimp(const ReadContext& ctx);
 
 /// STEP, IGES (through XCAF) and OCCT .brep, tessellated with BRepMesh.
 Result<bool> read_cad(const ReadContext& ctx, std::vector<TriangleSoup>& parts);

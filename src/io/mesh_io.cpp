@@ -269,31 +269,34 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   return model;
 }
 
-Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOptions& options) {
+Result<OmplAppVertices> ompl_app_vertices(const std::filesystem::path& file, const ImportOptions& options) {
   Reader reader = Reader::stl;
   Result<io_detail::ReadContext> ctx = prepare(file, options, reader);
   if (!ctx) return ctx.error();
   if (reader != Reader::cad) {
     // assimp, isolated like every third-party read (isolate.h).
-    if (!options.isolate_readers) return io_detail::ompl_app_center_with_assimp(*ctx);
+    if (!options.isolate_readers) return io_detail::ompl_app_vertices_with_assimp(*ctx);
     const io_detail::ReadContext& c = *ctx;
     auto bytes = io_detail::run_isolated(c.display, "assimp", options.reader_timeout, [&c]() -> Result<std::string> {
-      Result<Vec3> centre = io_detail::ompl_app_center_with_assimp(c);
-      if (!centre) return centre.error();
+      Result<OmplAppVertices> v = io_detail::ompl_app_vertices_with_assimp(c);
+      if (!v) return v.error();
       io_detail::ByteWriter w;
-      for (int i = 0; i < 3; ++i) w.f64((*centre)[i]);
+      for (const Vec3* x : {&v->center, &v->box.min, &v->box.max})
+        for (int i = 0; i < 3; ++i) w.f64((*x)[i]);
       return w.take();
     });
     if (!bytes) return bytes.error();
     io_detail::ByteReader r(*bytes);
-    Vec3 centre;
-    if (!r.f64(centre.x()) || !r.f64(centre.y()) || !r.f64(centre.z()) || !r.done())
-      return io_detail::file_error(c.display, "internal: the assimp reader's answer was cut short");
-    return centre;
+    OmplAppVertices v;
+    bool whole = true;
+    for (Vec3* x : {&v.center, &v.box.min, &v.box.max})
+      for (int i = 0; i < 3; ++i) whole = whole && r.f64((*x)[i]);
+    if (!whole || !r.done()) return io_detail::file_error(c.display, "internal: the assimp reader's answer was cut short");
+    return v;
   }
 
   // OMPL.app cannot read CAD files: the nearest rule is the mean of the tessellation's distinct
-  // vertex positions (each corner once, whatever the faces around it).
+  // vertex positions (each corner once, whatever the faces around it), and their box.
   Result<ImportedModel> model = import_mesh(file, options);
   if (!model) return model.error();
   std::vector<std::array<double, 3>> corners;
@@ -302,9 +305,20 @@ Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOpti
       for (int v = 0; v < 3; ++v) corners.push_back({t[v].x(), t[v].y(), t[v].z()});
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  OmplAppVertices out;
   Vec3 sum = Vec3::Zero();
-  for (const auto& c : corners) sum += Vec3(c[0], c[1], c[2]);
-  return Vec3(sum / static_cast<double>(corners.size()));
+  for (const auto& c : corners) {
+    sum += Vec3(c[0], c[1], c[2]);
+    out.box.extend(Vec3(c[0], c[1], c[2]));
+  }
+  out.center = sum / static_cast<double>(corners.size());
+  return out;
+}
+
+Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOptions& options) {
+  Result<OmplAppVertices> v = ompl_app_vertices(file, options);
+  if (!v) return v.error();
+  return v->center;
 }
 
 Result<bool> write_stl_binary(const std::filesystem::path& file, const TriangleSoup& soup) {

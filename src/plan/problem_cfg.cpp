@@ -137,6 +137,26 @@ Result<Problem> load_cfg(const fs::path& file) {
     p.bounds = box;
   }
   if (!error.empty()) return Error{error};
+  if (!any) {
+    // No volume: the bounds OMPL.app infers (InferEnvironmentBounds, then
+    // InferProblemDefinitionBounds, both with its default factor 1 and addition 0): the box of
+    // the world mesh's vertices as assimp reads them, stretched to hold the start and the goal.
+    // (Our TOML's default, a box grown well past the obstacles, would let the robot go round
+    // them: OMPL.app's Twistycool has no volume, and its wall then no longer closes the way.)
+    const MeshRef& world = p.obstacles.front();
+    auto vertices =
+        ompl_app_vertices(world.file, {.unit = p.unit, .file_unit = world.file_unit, .linear_deflection = world.deflection});
+    if (!vertices) return Error{at(kv.at("world").second) + "world: " + vertices.error().message};
+    Aabb box = vertices->box;
+    box.extend(p.start.translation);
+    if (p.goal) box.extend(p.goal->translation);
+    for (int i = 0; i < 3; ++i)
+      if (!(box.min[i] < box.max[i]))
+        return Error{name + ": no volume.* given, and the box OMPL.app would infer (the world mesh's, with the start "
+                            "and the goal) is flat along " + std::string(1, "xyz"[i]) +
+                     ": give volume.min.* and volume.max.*"};
+    p.bounds = box;
+  }
   if (p.bounds && (p.bounds->min.array() >= p.bounds->max.array()).any())
     return Error{name + ": volume.min must be below volume.max on every axis"};
   return p;

@@ -389,6 +389,76 @@ TEST_F(ProblemFiles, CfgRobotIsCentredAsOmplAppCentresIt) {
   EXPECT_NEAR(centre.z(), -22.0 / 3 * 1e-3, 1e-8);
 }
 
+// A .cfg without volume.*: OMPL.app infers the bounds (InferEnvironmentBounds, then
+// InferProblemDefinitionBounds, factor 1, addition 0): the box of the world mesh's vertices as
+// assimp returns them, every mesh of the file (here a triangle and a line), up axis applied, then
+// stretched to hold the start and the goal. Z-up (x, y, z) reads as (x, z, -y): the triangle
+// (1,2,3) (10,0,0) (0,20,30) as (1,3,-2) (10,0,0) (0,30,-20), the line's end (-5,2,3) as (-5,3,-2);
+// start (2, 5, -30), goal (4, 40, -10): min (-5, 0, -30), max (10, 40, 0). (Before, such a file
+// got our TOML's default, a box grown well past the obstacles, and OMPL.app's Twistycool could be
+// solved round its wall.)
+TEST_F(ProblemFiles, CfgWithoutVolumeTakesTheBoundsOmplAppInfers) {
+  write("world.dae", R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><up_axis>Z_UP</up_axis></asset>
+  <library_geometries><geometry id="g"><mesh>
+    <source id="p"><float_array id="a" count="12">1 2 3 10 0 0 0 20 30 -5 2 3</float_array>
+      <technique_common><accessor source="#a" count="4" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
+    <triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p></triangles>
+    <lines count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 3</p></lines>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#g"/></node></visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+)");
+  auto p = load_problem(write("novolume.cfg", R"([problem]
+robot = peg.stl
+world = world.dae
+start.x = 2
+start.y = 5
+start.z = -30
+goal.x = 4
+goal.y = 40
+goal.z = -10
+)"));
+  ASSERT_TRUE(p) << p.error().message;
+  ASSERT_TRUE(p->bounds);
+  EXPECT_EQ(p->bounds->min, Vec3(-5, 0, -30));
+  EXPECT_EQ(p->bounds->max, Vec3(10, 40, 0));
+
+  // Given, volume.* is taken as it is.
+  auto given = load_problem(write("volume.cfg", R"([problem]
+robot = peg.stl
+world = world.dae
+start.x = 2
+start.y = 5
+start.z = -30
+goal.x = 4
+goal.y = 40
+goal.z = -10
+volume.min.x = -100
+volume.min.y = -100
+volume.min.z = -100
+volume.max.x = 100
+volume.max.y = 100
+volume.max.z = 100
+)"));
+  ASSERT_TRUE(given) << given.error().message;
+  EXPECT_EQ(given->bounds->min, Vec3::Constant(-100));
+
+  // A box flat along an axis (a flat world, start and goal in its plane) is an error naming it.
+  write("flat.stl", "solid f\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 9 0 0\nvertex 0 9 0\nendloop\n"
+                    "endfacet\nendsolid f\n");
+  expect_error(load_problem(write("flat.cfg", "[problem]\nrobot = peg.stl\nworld = flat.stl\nstart.x = 1\nstart.y = 1\n"
+                                              "start.z = 0\ngoal.x = 2\ngoal.y = 2\ngoal.z = 0\n")),
+               "flat.cfg: no volume.* given, and the box OMPL.app would infer (the world mesh's, with the start and the "
+               "goal) is flat along z");
+}
+
 TEST_F(ProblemFiles, CfgDuplicatesZeroAxesAndNonFiniteNumbersAreErrors) {
   ASSERT_TRUE(load_problem(write("good.cfg", kCfg)));
   expect_error(load_problem(write("dup.cfg", std::string(kCfg) + "goal.z = 50\n")), "dup.cfg:18: goal.z: given twice (first on line 13)");

@@ -105,6 +105,16 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
 /// positions. In options.unit, from options.file_unit as import_mesh(); errors as import_mesh().
 Result<Vec3> ompl_app_center(const std::filesystem::path& file, const ImportOptions& options = {});
 
+/// The vertices ompl_app_center() averages, as OMPL.app reads them: their mean (`center`) and
+/// their axis-aligned box (`box`), which is the box OMPL.app infers for an environment mesh when a
+/// problem sets no bounds (RigidBodyGeometry::inferEnvironmentBounds → scene::inferBounds, with
+/// its default factor 1 and addition 0). One read of the file.
+struct OmplAppVertices {
+  Vec3 center = Vec3::Zero();
+  Aabb box;
+};
+Result<OmplAppVertices> ompl_app_vertices(const std::filesystem::path& file, const ImportOptions& options = {});
+
 /// Writes a binary STL (little-endian, float32; normals from the vertex order, zero for
 /// degenerate triangles; an 80-byte header not starting with "solid"). Deterministic bytes
 /// for equal input. Written whole or not at all (write_file_atomically()). Error (nothing
