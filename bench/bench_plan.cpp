@@ -5,7 +5,7 @@
 //
 //   bench_plan [--quick] [--time-limit S] [--seeds N] [--threads N] [--only a,b,...] [--no-cad]
 //              [--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--swept-seeds]
-//              [--ompl-collide-only] [--json FILE]
+//              [--ompl-collide-only] [--problem FILE]... [--json FILE]
 //
 // Problems (--suite classic, the default): the box problems of the scenes library (peg_in_hole,
 // t_slot, l_tunnel, bar_through_slot, enclosed) and the CAD scenes of `swept scene` at test
@@ -13,7 +13,9 @@
 // --suite ompl: the planner benchmark suite of issue 13 (swept/scenes/planning_suite.h, the
 // counterparts of OMPL.app's problems), written by `swept scene`'s writer and read back from
 // their problem.toml; swept gets --swept-time-limit (default 300 s) on the hard ones (trap,
-// hooks), OMPL keeps --time-limit. --suite all: both.
+// hooks), OMPL keeps --time-limit. --suite all: both. --problem FILE (repeatable): a problem file
+// of the user's, our problem.toml or an OMPL.app .cfg (e.g. OMPL.app's own resources/3D/*.cfg),
+// read by load_problem as `swept plan` reads it; given alone, only those files run.
 #include "swept/bench/plan_compare.h"
 #include "swept/bench/timing.h"
 #include "swept/io/file_write.h"
@@ -42,7 +44,8 @@ using namespace swept::bench;
 [[noreturn]] void usage(const std::string& why) {
   std::cerr << "bench_plan: " << why << "\n"
             << "usage: bench_plan [--quick] [--time-limit S] [--seeds N] [--threads N] [--only a,b] [--no-cad] "
-               "[--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--swept-seeds] [--ompl-collide-only] [--json FILE]\n"
+               "[--suite classic|ompl|all] [--swept-time-limit S] [--thread-check] [--swept-seeds] [--ompl-collide-only] "
+               "[--problem FILE]... [--json FILE]\n"
             << "  --quick        10 s limit, 5 seeds (defaults: 60 s, 5 seeds)\n"
             << "  --suite S      classic: box problems and CAD scenes (default); ompl: the OMPL.app counterparts "
                "(twisty-slot, bug-trap, hooks-1.5, hooks-1.2, hooks-1.1, house, cubicles, spiral-tube); all: both\n"
@@ -57,6 +60,8 @@ using namespace swept::bench;
                "air-cleaner, cylinder-head, tunnel-console, or the --suite ompl names)\n"
             << "  --no-cad       skip the CAD scenes\n"
             << "  --ompl-collide-only  OMPL's validity check without the clearance (fcl::collide only)\n"
+            << "  --problem FILE a problem file (problem.toml or an OMPL.app .cfg), run as `swept plan` reads it;\n"
+               "                 repeatable; given without --suite, only these files run\n"
             << "  --json FILE    also write the results as JSON\n";
   std::exit(2);
 }
@@ -71,6 +76,8 @@ int main(int argc, char** argv) {
   bool& collide_only = o.collide_only;
   bool cad = true;
   std::string suite = "classic";
+  bool suite_given = false;
+  std::vector<std::string> problem_files;
   double swept_hard_limit = 300.0;
   std::vector<std::string> only;
   std::string json_file;
@@ -103,6 +110,7 @@ int main(int argc, char** argv) {
     } else if (a == "--suite") {
       if (i + 1 >= argc) usage("--suite needs a value");
       suite = argv[++i];
+      suite_given = true;
       if (suite != "classic" && suite != "ompl" && suite != "all")
         usage("--suite: unknown suite '" + suite + "' (classic, ompl or all)");
     } else if (a == "--swept-time-limit") {
@@ -116,6 +124,9 @@ int main(int argc, char** argv) {
       cad = false;
     } else if (a == "--ompl-collide-only") {
       collide_only = true;
+    } else if (a == "--problem") {
+      if (i + 1 >= argc) usage("--problem needs a file");
+      problem_files.emplace_back(argv[++i]);
     } else if (a == "--json") {
       if (i + 1 >= argc) usage("--json needs a file");
       json_file = argv[++i];
@@ -128,8 +139,26 @@ int main(int argc, char** argv) {
   auto wanted = [&](const std::string& n) { return only.empty() || std::find(only.begin(), only.end(), n) != only.end(); };
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
 
-  const bool classic = suite != "ompl";
+  // Problem files alone replace the built-in problems; with --suite they run first, then the suite.
+  if (!problem_files.empty() && !suite_given) {
+    suite = "none";
+    cad = false;
+  }
+  const bool classic = suite == "classic" || suite == "all";
   std::vector<PlanCase> cases;
+  for (const std::string& file : problem_files) {
+    auto loaded = load_problem(file);
+    if (!loaded) {
+      std::fprintf(stderr, "bench_plan: %s\n", loaded.error().message.c_str());
+      return 1;
+    }
+    // Named by the file's stem, or by its folder for `swept scene`'s problem.toml.
+    const std::filesystem::path path(file);
+    std::string name = path.stem().string();
+    if (name == "problem" && !std::filesystem::absolute(path).parent_path().filename().empty())
+      name = std::filesystem::absolute(path).parent_path().filename().string();
+    cases.push_back(PlanCase{name, *loaded, std::nullopt, std::nullopt, "file", 0.0});
+  }
   for (auto& g : scenes::box_problems()) {
     if (!classic || !wanted(g.name)) continue;
     cases.push_back(PlanCase{g.name, g.problem, std::move(g.obstacles), std::move(g.body), "box", 0.0});
@@ -141,7 +170,7 @@ int main(int argc, char** argv) {
             ("swept-bench-plan-" + std::to_string(static_cast<long long>(std::time(nullptr))));
     }
   };
-  if (suite != "classic") {
+  if (suite == "ompl" || suite == "all") {
     for (const scenes::SuiteInfo& info : scenes::suite_catalog()) {
       if (!wanted(info.name)) continue;
       make_tmp();
