@@ -219,7 +219,9 @@ struct DistanceSearch {
       if (best_first) std::push_heap(waiting.begin(), waiting.end(), later);
     };
     while (diving || !waiting.empty()) {
-      if (have_witness && (stop_at_first || best < stop_below)) return;
+      // A touching pair ends every search: nothing is closer than 0 (the pairs left would only
+      // confirm it), and the witness is the first such pair found.
+      if (have_witness && (stop_at_first || best < stop_below || !(best > 0.0))) return;
       detail::PairEntry e = next;
       if (!diving) {
         if (best_first && ++dives > kBestFirstDives) {
@@ -337,15 +339,17 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
     if (d.distance < request.upper_bound) warm.take(d, h.a, h.b);
   }
 
-  // Overlapping models: a first-contact search finds a touching pair far faster than the
-  // distance search would single out a zero among many near-zero bounds. It costs little when
-  // the models are apart (most node pairs are rejected near the root); skipping it after a
-  // hint that is not a contact made queries along motions into contact 2.4x slower.
-  // (Not with pairs left out: the first contact may be one of them; not when the caller knows
-  // the models apart; not with a stop_below above 0, where the first pair below it ends the
-  // search as a contact would. A stop_below of 0 or less, a clearance of 0 in the planner, is
-  // never reached: only a contact ends such a query early, and this search finds it.)
-  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > 0.0) && !request.apart;
+  // Overlapping models: a first-contact search found a touching pair far faster than the distance
+  // search singled out a zero among many near-zero bounds (measured before that search ended at its
+  // first touching pair; its pairs were then all visited). It costs little when the models
+  // are apart (most node pairs are rejected near the root); skipping it after a hint that is not a
+  // contact made queries along motions into contact 2.4x slower. (Not with pairs left out: the
+  // first contact may be one of them; not when the caller knows the models apart; not with a
+  // stop_below, where the search ends at its first pair below the threshold or, for a threshold
+  // of 0 or less such as the planner's at a clearance of 0, at its first touching pair, as the
+  // contact search would: on OMPL.app's cubicles and Home and on the suite's .cfg files, plans
+  // 2-24 % faster than with the contact search first, the same answers and paths.)
+  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > -kInf) && !request.apart;
   warm.stop_below = cold.stop_below = request.stop_below;
   std::int32_t ci = -1, cj = -1;
   const CollideResult contact = contact_first ? collide_relative(a, b, rel, {}, &ci, &cj) : CollideResult{};

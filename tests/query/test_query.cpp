@@ -215,21 +215,21 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         }
       }
 
-      // A stop_below of 0 or less, which no distance is below (the planner at a clearance of 0),
-      // changes nothing: the same answer, witness and work as without it, the first-contact
-      // search included (it used to be skipped, and a touching pose then cost a distance search).
-      for (const double below : {0.0, -1.0}) {
-        const DistanceRequest plain{.enough = 2.0 * bd.distance + 1.0};
-        DistanceRequest with = plain;
-        with.stop_below = below;
-        const DistanceResult p = distance(a, pa, b, pb, plain);
-        const DistanceResult w = distance(a, pa, b, pb, with);
-        EXPECT_EQ(w.distance, p.distance);
-        EXPECT_EQ(w.exact, p.exact);
-        EXPECT_EQ(w.triangle_a, p.triangle_a);
-        EXPECT_EQ(w.triangle_b, p.triangle_b);
-        EXPECT_EQ(w.stats.bv_tests, p.stats.bv_tests);
-        EXPECT_EQ(w.stats.triangle_tests, p.stats.triangle_tests);
+      // A stop_below of 0 or less, which no distance is below (the planner at a clearance of 0):
+      // the exact distance, as without it, with a witness at that distance. Without the contact
+      // search (skipped with a stop_below, or when the caller says the models are apart) a
+      // touching pose ends the distance search at its first touching pair: still exactly 0.
+      for (const DistanceRequest& request : {DistanceRequest{.stop_below = 0.0}, DistanceRequest{.stop_below = -1.0},
+                                            DistanceRequest{.apart = true}}) {
+        const DistanceResult w = distance(a, pa, b, pb, request);
+        EXPECT_TRUE(w.exact);
+        EXPECT_NEAR(w.distance, bd.distance, 1e-12 * bd.distance);
+        if (bd.distance == 0.0) {
+          EXPECT_EQ(w.distance, 0.0);
+        }
+        EXPECT_NEAR((w.point_a - w.point_b).norm(), w.distance, wtol);
+        EXPECT_LE(point_triangle_closest(pa.apply_inverse(w.point_a), s.a[w.triangle_a]).distance, wtol);
+        EXPECT_LE(point_triangle_closest(pb.apply_inverse(w.point_b), s.b[w.triangle_b]).distance, wtol);
       }
 
       // Tolerance: either side of the true distance.

@@ -81,9 +81,10 @@ struct DistanceRequest {
   /// Early exit for callers that only need to know the distance is below this much: as soon as
   /// a triangle pair closer than `stop_below` is found, stop; then `distance` is that pair's
   /// distance (< stop_below, and ≥ the true distance) and `exact` is false. (The first-contact
-  /// search that otherwise starts every query is skipped when stop_below > 0: a pair below the
-  /// threshold ends the search as a contact would. A stop_below of 0 or less, which no distance
-  /// is below, changes nothing: the query runs as without it, contact search included.)
+  /// search that otherwise starts every query is skipped: a pair below the threshold ends the
+  /// search as a contact would. With a stop_below of 0 or less, which no distance is below, the
+  /// answer is exact, as without it; the search still ends at its first touching pair, as every
+  /// distance search does.)
   double stop_below = -std::numeric_limits<double>::infinity();
   /// With `stop_below`: triangle pairs (positions in the trees, as `DistanceResult::hint`) tried
   /// before anything else, for instance the pairs that blocked nearby poses. The first one closer
