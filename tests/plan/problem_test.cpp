@@ -415,7 +415,7 @@ TEST_F(ProblemFiles, CfgWithoutVolumeTakesTheBoundsOmplAppInfers) {
   <scene><instance_visual_scene url="#s"/></scene>
 </COLLADA>
 )");
-  auto p = load_problem(write("novolume.cfg", R"([problem]
+  const std::string cfg = R"([problem]
 robot = peg.stl
 world = world.dae
 start.x = 2
@@ -424,23 +424,15 @@ start.z = -30
 goal.x = 4
 goal.y = 40
 goal.z = -10
-)"));
+)";
+  auto p = load_problem(write("novolume.cfg", cfg));
   ASSERT_TRUE(p) << p.error().message;
   ASSERT_TRUE(p->bounds);
   EXPECT_EQ(p->bounds->min, Vec3(-5, 0, -30));
   EXPECT_EQ(p->bounds->max, Vec3(10, 40, 0));
 
   // Given, volume.* is taken as it is.
-  auto given = load_problem(write("volume.cfg", R"([problem]
-robot = peg.stl
-world = world.dae
-start.x = 2
-start.y = 5
-start.z = -30
-goal.x = 4
-goal.y = 40
-goal.z = -10
-volume.min.x = -100
+  auto given = load_problem(write("volume.cfg", cfg + R"(volume.min.x = -100
 volume.min.y = -100
 volume.min.z = -100
 volume.max.x = 100
