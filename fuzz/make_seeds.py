@@ -267,6 +267,9 @@ goal.axis.z = 0
     write(c("path_ompl"), "three_poses.path", "0 0 0 0 0 0 1\n0 0 10.5 0 0 0.38268343236508978 0.92387953251128674\n"
           "\n0.001 -2 300 1 0 0 0\n")
     write(c("path_ompl"), "spaced.path", "  1e2\t-3.5 0 0 0 1e-300 1e-300 \r\n")
+    # OMPL's PathGeometric::print() form, as OMPL.app ships its resources/3D/*.path.
+    write(c("path_ompl"), "printed.path", "Compound state [\nRealVectorState [270 160 -200]\nSO3State [0 0 0 1]\n]\n"
+          "Compound state [\nRealVectorState [1e-3 -2 300]\nSO3State [6.12323e-17 1 6.12323e-17 3.7494e-33]\n]\n")
 
 
 if __name__ == "__main__":

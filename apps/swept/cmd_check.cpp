@@ -152,7 +152,7 @@ void add_check_command(CLI::App& app) {
       "reference point). Prints the minimum clearance and where, and the first pose where the path\n"
       "comes too close or collides. Exit 0: valid; 2: not valid; 1: bad input.");
   cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
-  cmd->add_option("path", o->path, "Path file: our JSON, or OMPL .path (x y z qx qy qz qw per line)")->required();
+  cmd->add_option("path", o->path, "Path file: our JSON, or OMPL .path (x y z qx qy qz qw per line, or OMPL's printed SE(3) states as OMPL.app ships its paths)")->required();
   cmd->add_option("--clearance", o->clearance, "Required clearance (default: the problem's)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--reference", o->reference,

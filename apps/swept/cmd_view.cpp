@@ -357,7 +357,7 @@ void add_view_command(CLI::App& app) {
       "view", "Write one self-contained HTML file (three.js inlined, works offline) showing the obstacles and the "
               "body moving along a path, with the clearance along the path.");
   cmd->add_option("problem", options->problem, "problem file (.toml or OMPL.app .cfg)")->required();
-  cmd->add_option("path", options->path, "path file (swept JSON or OMPL .path)")->required();
+  cmd->add_option("path", options->path, "path file (swept JSON or OMPL .path, either of OMPL's forms)")->required();
   cmd->add_option("-o,--output", options->output, "HTML file to write")->capture_default_str();
   cmd->add_option("--samples", options->samples, "poses along the path where the clearance is computed")
       ->capture_default_str()

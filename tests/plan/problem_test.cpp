@@ -160,6 +160,11 @@ volume.max.z = 60
   test::verify_path(*s, r.path, p->clearance);
 }
 
+void expect_path_error(const Result<Path>& p, const std::string& needle) {
+  ASSERT_FALSE(p) << "expected an error mentioning '" << needle << "'";
+  EXPECT_NE(p.error().message.find(needle), std::string::npos) << p.error().message;
+}
+
 void expect_error(const Result<Problem>& p, const std::string& needle) {
   ASSERT_FALSE(p) << "expected an error mentioning '" << needle << "'";
   EXPECT_NE(p.error().message.find(needle), std::string::npos) << p.error().message;
@@ -479,6 +484,41 @@ TEST_F(ProblemFiles, CfgDuplicatesZeroAxesAndNonFiniteNumbersAreErrors) {
   p = load_problem(write("huge.cfg", huge_axis));
   ASSERT_TRUE(p) << p.error().message;
   EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->goal->rotation), 1.5, 1e-12);
+}
+
+// OMPL's PathGeometric::print() form, in which OMPL.app ships its solution paths
+// (resources/3D/*.path): per state "Compound state [", "RealVectorState [x y z]",
+// "SO3State [qx qy qz qw]", "]". The second state is a half turn about y: (0, 1, 0, 0) in x y z w.
+TEST_F(ProblemFiles, OmplPrintedPathFilesAreRead) {
+  const std::string two = "Compound state [\nRealVectorState [270 160 -200]\nSO3State [0 0 0 1]\n]\n"
+                          "Compound state [\nRealVectorState [270 160 -400]\nSO3State [6.12323e-17 1 6.12323e-17 3.7494e-33]\n]\n";
+  auto path = read_path(write("printed.path", two));
+  ASSERT_TRUE(path) << path.error().message;
+  ASSERT_EQ(path->poses.size(), 2u);
+  EXPECT_EQ(path->poses[0].translation, Vec3(270, 160, -200));
+  EXPECT_TRUE(path->poses[0].rotation.isIdentity());
+  EXPECT_EQ(path->poses[1].translation, Vec3(270, 160, -400));
+  EXPECT_NEAR((path->poses[1].rotation - Vec3(-1, 1, -1).asDiagonal().toDenseMatrix()).norm(), 0.0, 1e-15);
+
+  // The matrix form still reads every line.
+  auto matrix = read_path(write("matrix.path", "1 2 3 0 0 0 1\n4 5 6 0 0 0 1\n7 8 9 0 0 0 1\n"));
+  ASSERT_TRUE(matrix) << matrix.error().message;
+  EXPECT_EQ(matrix->poses.size(), 3u);
+
+  // Broken states name the file and line.
+  expect_path_error(read_path(write("cut.path", "Compound state [\nRealVectorState [1 2 3]\n")),
+                    "cut.path: the last state is cut short (line 2)");
+  expect_path_error(read_path(write("noso3.path", "Compound state [\nRealVectorState [1 2 3]\n]\n")),
+                    "noso3.path:3: expected 'SO3State [x y z w]'");
+  expect_path_error(read_path(write("short.path", "Compound state [\nRealVectorState [1 2]\nSO3State [0 0 0 1]\n]\n")),
+                    "short.path:2: RealVectorState: expected 3 numbers");
+  expect_path_error(read_path(write("nan.path", "Compound state [\nRealVectorState [1 2 nan]\nSO3State [0 0 0 1]\n]\n")),
+                    "nan.path:2: RealVectorState");
+  expect_path_error(read_path(write("zero.path", "Compound state [\nRealVectorState [1 2 3]\nSO3State [0 0 0 0]\n]\n")),
+                    "zero.path:4: zero quaternion");
+  expect_path_error(read_path(write("mixed.path", "Compound state [\nRealVectorState [1 2 3]\nSO3State [0 0 0 1]\n]\n"
+                                                  "1 2 3 0 0 0 1\n")),
+                    "mixed.path:5: expected 'Compound state ['");
 }
 
 TEST_F(ProblemFiles, BadPathFiles) {
