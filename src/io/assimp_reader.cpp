@@ -108,10 +108,8 @@ std::string one_line(std::string text) {
   return text;
 }
 
-// Sums the vertices of every mesh under `node` (all of them, as OMPL.app's extractVertices does:
-// points and lines too), node transformations applied.
-// Every vertex of every mesh under `node`, node transformations applied (OMPL.app's
-// scene::extractVertices): their sum, count and box.
+// Every vertex of every mesh under `node` (all of them, as OMPL.app's scene::extractVertices
+// does: points and lines too), node transformations applied: their sum, count and box.
 void gather_vertices(const aiScene& scene, const aiNode& node, const Affine& parent, Vec3& sum, std::size_t& count,
                      Aabb& box) {
   const Affine world = compose(parent, to_affine(node.mTransformation));
