@@ -13,7 +13,7 @@
 // --suite ompl: the planner benchmark suite of issue 13 (swept/scenes/planning_suite.h, the
 // counterparts of OMPL.app's problems), written by `swept scene`'s writer and read back from
 // their problem.toml; swept gets --swept-time-limit (default 300 s) on the hard ones (trap,
-// hooks), OMPL keeps --time-limit. --suite all: both. --problem FILE (repeatable): a problem file
+// hooks), and on --problem files when the flag is given; OMPL keeps --time-limit. --suite all: both. --problem FILE (repeatable): a problem file
 // of the user's, our problem.toml or an OMPL.app .cfg (e.g. OMPL.app's own resources/3D/*.cfg),
 // read by load_problem as `swept plan` reads it; given alone, only those files run.
 #include "swept/bench/plan_compare.h"
@@ -50,7 +50,8 @@ using namespace swept::bench;
             << "  --suite S      classic: box problems and CAD scenes (default); ompl: the OMPL.app counterparts "
                "(twisty-slot, bug-trap, hooks-1.5, hooks-1.2, hooks-1.1, house, cubicles, spiral-tube); all: both\n"
             << "  --swept-time-limit S  swept's limit on the suite's hard problems (bug-trap, hooks-*; default 300 s; "
-               "OMPL keeps --time-limit)\n"
+               "OMPL keeps --time-limit),\n"
+               "                 and, when given, on the --problem files\n"
             << "  --thread-check one more swept run at 1 thread per solved problem: the path hash must not change\n"
             << "                 (its time is printed, and how many times swept's median it is: what the other cores gave)\n"
             << "  --swept-seeds  swept over seeds too, as OMPL is: one more run for each seed 1..N-1 (another draw of\n"
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
   bool suite_given = false;
   std::vector<std::string> problem_files;
   double swept_hard_limit = 300.0;
+  bool swept_limit_given = false;
   std::vector<std::string> only;
   std::string json_file;
   auto number = [&](int& i, const std::string& flag) -> double {
@@ -116,6 +118,7 @@ int main(int argc, char** argv) {
     } else if (a == "--swept-time-limit") {
       swept_hard_limit = number(i, a);
       if (swept_hard_limit <= 0) usage("--swept-time-limit must be > 0");
+      swept_limit_given = true;
     } else if (a == "--thread-check") {
       o.thread_check = true;
     } else if (a == "--swept-seeds") {
@@ -157,7 +160,8 @@ int main(int argc, char** argv) {
     std::string name = path.stem().string();
     if (name == "problem" && !std::filesystem::absolute(path).parent_path().filename().empty())
       name = std::filesystem::absolute(path).parent_path().filename().string();
-    cases.push_back(PlanCase{name, *loaded, std::nullopt, std::nullopt, "file", 0.0});
+    // A file's hardness is the user's to say: --swept-time-limit, when given, is swept's limit on it.
+    cases.push_back(PlanCase{name, *loaded, std::nullopt, std::nullopt, "file", swept_limit_given ? swept_hard_limit : 0.0});
   }
   for (auto& g : scenes::box_problems()) {
     if (!classic || !wanted(g.name)) continue;
