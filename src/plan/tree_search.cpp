@@ -54,8 +54,19 @@ constexpr double kNodeReach = 0.03;
 constexpr std::array<double, 3> kLazyPoints{0.5, 0.25, 0.75};
 constexpr double kLazyLong = 0.75;
 
-// Slides along the obstacles after a blocked step.
-constexpr int kSlides = 8;
+// The longest step beyond a node's free ball, as a share of the bounds' diagonal; the tries of a
+// step (the first, then halved toward its start); slides along the obstacles after a blocked step
+// of the growing tree; the other tree reaches for the new node straight until blocked, without
+// slides (RRTConnect's connect). Chosen together, 2026-12-01, against 0.1, 6, 8 and 8 (each
+// alone, earlier, moved little): over seeds 0-9 at two threads, medians, OMPL.app's cubicles
+// 896 -> 332 ms, Home 1,281 -> 673, Twistycool 1,093 -> 122, Abstract 129 -> 107; the suite's
+// cubicles 36 -> 17, bug trap 32 -> 26, house 25 -> 23, twisty slot 15 -> 14, spiral tube
+// 1,035 -> 982; the tunnel console 325 -> 119 and the cylinder head 584 -> 238 over seeds 0-4.
+// docs/bench-plan.md, "Fewer tries per step".
+constexpr double kStepShare = 0.2;
+constexpr int kStepTries = 2;
+constexpr int kSlides = 2;
+constexpr int kReachSlides = 0;
 // Roots of a goal region's tree.
 constexpr std::size_t kGoalRoots = 16;
 
@@ -110,7 +121,7 @@ TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_dis
   if (problem.seed != 0)
     for (std::size_t d = 0; d < shift_.size(); ++d) shift_[d] = seed_offset(problem.seed, d);
   const double size = context.scene_size();
-  step_ = 0.1 * (space.bounds.max - space.bounds.min).norm();
+  step_ = kStepShare * (space.bounds.max - space.bounds.min).norm();
   min_step_ = std::max(context.check.margin(), 1e-3 * size);
   step_ = std::max(step_, 2 * min_step_);
   trees_[0].push_back(make_node(start, start_distance, -1));
@@ -222,7 +233,7 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
   // The pairs found closest or blocking at the node and at the poses this attempt tried
   // before are tried first.
   suspects.add(from.hint);
-  for (int attempt = 0; attempt < 6 && s > 0.0; ++attempt) {
+  for (int attempt = 0; attempt < kStepTries && s > 0.0; ++attempt) {
     const bool whole = s >= length;
     const Pose q = whole ? target : motion.at(s / length);
     if (inside(q)) {
@@ -270,7 +281,7 @@ std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose
 }
 
 bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& target, std::vector<TreeNode>& chain,
-                        bool& reached, std::size_t& edges, Suspects& suspects) const {
+                        bool& reached, std::size_t& edges, Suspects& suspects, int slides) const {
   std::optional<TreeNode> next = step_toward(from, target, reached, suspects);
   if (next) {
     edges += next->certified;
@@ -282,7 +293,7 @@ bool TreeSearch::extend(const TreeNode& from, std::int32_t parent, const Pose& t
   // Blocked: slide along the obstacles toward the target (retraction, Zhang & Manocha 2008).
   const std::size_t before = chain.size();
   TreeNode at = from;
-  for (int k = 0; k < kSlides && !stopped(); ++k) {
+  for (int k = 0; k < slides && !stopped(); ++k) {
     std::optional<TreeNode> slid = slide(at, target, suspects);
     if (!slid) break;
     edges += slid->certified;
@@ -363,7 +374,7 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint6
   // Every fourth sample moves along one axis or turns in place (`lattice_move`).
   const Pose aim = index % 4 == 3 ? lattice_move(mine[from], target, index / 4 % 2 == 1) : target;
   Suspects suspects;  // this attempt's
-  if (!extend(mine[from], from, aim, out.grown, reached, out.edges, suspects)) return out;
+  if (!extend(mine[from], from, aim, out.grown, reached, out.edges, suspects, kSlides)) return out;
   reach_for(grow, out, kConnectSteps, suspects);
   return out;
 }
@@ -435,7 +446,7 @@ void TreeSearch::reach_for(int grow, Attempt& out, int max_steps, Suspects& susp
   TreeNode at = other[parent];
   for (int k = 0; k < max_steps && !stopped(); ++k) {
     const std::size_t before = out.chain.size();
-    const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges, suspects);
+    const bool moved = extend(at, parent, grown.pose, out.chain, reached, out.edges, suspects, kReachSlides);
     if (reached) {
       out.connected = true;
       if (out.chain.empty()) out.meet = parent;  // the other tree's node is at the new node already

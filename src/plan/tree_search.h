@@ -11,7 +11,8 @@
 // distance bound D is a free ball of radius D − margin in the motion metric (Quinlan's bubbles),
 // so a step inside it is certified without a query, and longer steps are certified by the
 // adaptive certificate (Schwarzer, Saha & Latombe 2005). A step whose end is blocked is retried
-// shorter, toward the last free part of the motion.
+// once, shorter, toward the last free part of the motion; the growing tree then slides along the
+// obstacles, while the other tree reaches straight until blocked.
 //
 // Determinism on every core: samples are drawn in rounds of a fixed count; every extension of
 // a round is computed from the trees as they stood at the start of the round, in parallel, and
@@ -127,11 +128,11 @@ class TreeSearch {
   /// shortest step is blocked. `reached` is set when the node is `target` itself.
   std::optional<TreeNode> step_toward(const TreeNode& from, const Pose& target, bool& reached, Suspects& suspects) const;
   /// Extends from `from` (index `parent`) toward `target`: one step, or after a blocked step
-  /// slides along the obstacles (retraction: the motion's component into the nearest obstacle
-  /// taken out). Appends the new nodes to `chain` (parents encoded as in Attempt); false when
-  /// none. `reached`: the target itself was reached (or `from` is at it).
+  /// up to `slides` slides along the obstacles (retraction: the motion's component into the
+  /// nearest obstacle taken out). Appends the new nodes to `chain` (parents encoded as in
+  /// Attempt); false when none. `reached`: the target itself was reached (or `from` is at it).
   bool extend(const TreeNode& from, std::int32_t parent, const Pose& target, std::vector<TreeNode>& chain,
-              bool& reached, std::size_t& edges, Suspects& suspects) const;
+              bool& reached, std::size_t& edges, Suspects& suspects, int slides) const;
   /// One slide from `from` toward `target` along the nearest obstacle, certified.
   std::optional<TreeNode> slide(const TreeNode& from, const Pose& target, Suspects& suspects) const;
   /// Grows tree `grow` toward sample `index` (`target`), and the other tree toward what grew.
@@ -153,7 +154,8 @@ class TreeSearch {
   /// slides, appending the nodes to `chain`; true when the leg's end is reached.
   bool leg(TreeNode at, std::int32_t parent, const Pose& leg, std::vector<TreeNode>& chain, std::size_t& edges,
            Suspects& suspects) const;
-  /// The other tree reaches for the last node `out` grew, step after step (at most `max_steps`).
+  /// The other tree reaches for the last node `out` grew, step after step (at most `max_steps`),
+  /// without slides: until it gets there or a step is blocked.
   void reach_for(int grow, Attempt& out, int max_steps, Suspects& suspects) const;
   /// Seeds per tree with a root of its own: 24 orientations × 6 axes.
   static constexpr std::uint64_t kSeeds = 144;

@@ -217,12 +217,15 @@ TEST(TreeSearch, ThreadsTheTubeOutOfTheCage) {
   EXPECT_EQ(outcome, detail::TreeOutcome::found);
   EXPECT_TRUE(path->front().translation == start.translation && path->front().rotation == start.rotation);
   EXPECT_TRUE(path->back().translation == rig.problem().goal->translation);
-  // Somewhere in the tube (x in [3, 10]) the rod lies along x, within the tilt the tube allows.
+  // Somewhere in the tube (x in [3, 10]) the rod lies along x, within the tilt the tube allows:
+  // at a waypoint, or along a motion between two (a long step may pass the tube whole).
   bool threaded = false;
-  for (const Pose& q : *path) {
-    const double along = std::abs((q.rotation * Vec3::UnitX()).x());
-    threaded = threaded || (q.translation.x() > 3 && q.translation.x() < 10 && along > std::cos(0.5));
-  }
+  for (std::size_t i = 0; i + 1 < path->size() && !threaded; ++i)
+    for (int k = 0; k <= 400 && !threaded; ++k) {
+      const Pose q = interpolate((*path)[i], (*path)[i + 1], k / 400.0, rig.scene.reference);
+      const double along = std::abs((q.rotation * Vec3::UnitX()).x());
+      threaded = q.translation.x() > 3 && q.translation.x() < 10 && along > std::cos(0.5);
+    }
   EXPECT_TRUE(threaded);
   check_path_independently(rig.scene, rig.problem(), Path{*path});
 }
@@ -336,9 +339,12 @@ TEST(TreeSearch, LazyEdgesAreCertifiedBeforeAPathUsesThem) {
   // this test does not test the cut). An edge that fails is bridged by a certified motion between
   // the waypoints around it when one is free; the house's first joined path is saved so (else
   // this test does not test the bridges).
+  // Seed 3 is such a draw (three bridges, four edges cut); of seeds 0-79, 47 bridge an edge.
   std::vector<std::uint64_t> hashes, cut, bridges;
   for (int threads : {1, 2}) {
-    PhaseRig rig(scenes::suite::house().problem, 120.0);
+    GeneratedProblem g = scenes::suite::house().problem;
+    g.problem.seed = 3;
+    PhaseRig rig(std::move(g), 120.0);
     rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
     const Pose start = rig.problem().start;
     detail::TreeSearch search(rig.context, start, rig.start_distance(start), rig.start_distance(*rig.problem().goal));
@@ -365,11 +371,12 @@ TEST(TreeSearch, BridgesStopAfterFourJoinsWithoutOne) {
   // waypoints avoids: after kBridgeMisses such joins no bridge is tried any more, so the tries
   // stay within kBridgeMisses × kBridges (each miss stops at its first edge without a bridge),
   // however many joins fail after them. The path is the one the later joins find, and passes the
-  // independent check. The suite's house at seed 20 is such a draw (a scan of seeds 0-60 found
-  // six with four misses; this one cuts eight edges). Since a lazy step's quarters are checked
-  // too, the cubicles' seed 0, this test's draw before, no longer joins through walls.
+  // independent check. The suite's house at seed 0 is such a draw since the trees' steps are
+  // longer and fewer (2026-12-01; it cuts six edges; a scan of seeds 0-79 found 17 with four
+  // misses). Before, seed 20 was; since a lazy step's quarters are checked, the cubicles' seed 0,
+  // this test's first draw, no longer joins through walls.
   GeneratedProblem g = scenes::suite::house().problem;
-  g.problem.seed = 20;
+  g.problem.seed = 0;
   PhaseRig rig(std::move(g), 120.0);
   rig.check.set_deadline(rig.context.started + std::chrono::seconds(120));
   const Pose start = rig.problem().start;
@@ -458,6 +465,7 @@ TEST(TreeSearch, BlockedPosesDecidedOrMeasuredGiveTheSameTrees) {
     EXPECT_EQ(queries[0], queries[1]) << problem;
   }
 }
+
 
 }  // namespace
 }  // namespace swept
