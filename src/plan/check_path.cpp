@@ -173,7 +173,8 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
        << " (clearance " << margin << ")";
   } else if (!out.first_bad_segment) {
     out.valid = true;
-    os << "valid: every one of the " << segments << " segments keeps the clearance " << margin;
+    if (segments == 1) os << "valid: the one segment keeps the clearance " << margin;
+    else os << "valid: every one of the " << segments << " segments keeps the clearance " << margin;
     if (escape) os << " (the first, an escape from contact, with " << out.exempt_pairs << " triangle pairs exempt)";
   } else {
     const std::size_t i = *out.first_bad_segment;

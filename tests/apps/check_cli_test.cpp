@@ -64,6 +64,13 @@ TEST_F(CheckCli, MiddleOfTheTunnelKeepsOnePointFive) {
   for (const Vec3& x : {Vec3(-8, 0, 0), Vec3(25, 0, 0), Vec3(25, 0, 48)}) p.poses.push_back(Pose::from_translation(x));
   ASSERT_TRUE(write_path(dir / "middle.path", p, "mm", Vec3::Zero()));
   EXPECT_EQ(test::run_cli("check " + problem + " " + (dir / "middle.path").string(), false).code, 0);
+  // The text names the count of segments, and a single one as such.
+  EXPECT_NE(test::run_cli("check " + problem + " " + path).out.find("every one of the 2 segments keeps the clearance"),
+            std::string::npos);
+  const std::string first_leg = path_file({{-8, 0, 0}, {25, 0, 0}}, "first_leg.json");
+  const test::CliRun one = test::run_cli("check " + problem + " " + first_leg);
+  EXPECT_EQ(one.code, 0) << one.out;
+  EXPECT_NE(one.out.find("valid: the one segment keeps the clearance"), std::string::npos) << one.out;
 }
 
 TEST_F(CheckCli, StraightThroughTheBlockCollides) {
