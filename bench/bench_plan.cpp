@@ -13,9 +13,10 @@
 // --suite ompl: the planner benchmark suite of issue 13 (swept/scenes/planning_suite.h, the
 // counterparts of OMPL.app's problems), written by `swept scene`'s writer and read back from
 // their problem.toml; swept gets --swept-time-limit (default 300 s) on the hard ones (trap,
-// hooks), and on --problem files when the flag is given; OMPL keeps --time-limit. --suite all: both. --problem FILE (repeatable): a problem file
-// of the user's, our problem.toml or an OMPL.app .cfg (e.g. OMPL.app's own resources/3D/*.cfg),
-// read by load_problem as `swept plan` reads it; given alone, only those files run.
+// hooks), and on --problem files when the flag is given; OMPL keeps --time-limit. --suite all:
+// both. --problem FILE (repeatable): a problem file of the user's, our problem.toml or an
+// OMPL.app .cfg (e.g. OMPL.app's own resources/3D/*.cfg), read by load_problem as `swept plan`
+// reads it; given alone, only those files run.
 #include "swept/bench/plan_compare.h"
 #include "swept/bench/timing.h"
 #include "swept/io/file_write.h"
