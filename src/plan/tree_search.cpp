@@ -111,7 +111,7 @@ struct TreeSearch::Attempt {
 };
 
 TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_distance, double goal_distance)
-    : context_(context) {
+    : context_(context), index_{NearestIndex(context.space.radius), NearestIndex(context.space.radius)} {
   const Problem& problem = context.problem;
   const SearchSpace& space = context.space;
   region_ = problem.goal_outside || !problem.goal;
@@ -124,8 +124,8 @@ TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_dis
   step_ = kStepShare * (space.bounds.max - space.bounds.min).norm();
   min_step_ = std::max(context.check.margin(), 1e-3 * size);
   step_ = std::max(step_, 2 * min_step_);
-  trees_[0].push_back(make_node(start, start_distance, -1));
-  if (!region_) trees_[1].push_back(make_node(*problem.goal, goal_distance, -1));
+  add_node(0, make_node(start, start_distance, -1));
+  if (!region_) add_node(1, make_node(*problem.goal, goal_distance, -1));
 }
 
 TreeNode TreeSearch::make_node(const Pose& pose, double distance, std::int32_t parent) const {
@@ -197,24 +197,30 @@ bool TreeSearch::inside(const Pose& pose) const {
 }
 
 std::int32_t TreeSearch::nearest(const std::vector<TreeNode>& tree, const Pose& pose) const {
+  // Every node in order (the index answers the same: nearest_index.h).
   const Vec3 point = context_.reference_at(pose);
   const Quat q = pose.quaternion();
-  const double r = context_.space.radius;
   std::int32_t best = -1;
   double best_length = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < tree.size(); ++i) {
     if (tree[i].dead) continue;
-    const TreeNode& n = tree[i];
-    const double moved = (n.point - point).norm();
-    if (moved >= best_length) continue;
-    const double c = std::min(1.0, std::abs(n.rotation.dot(q)));
-    const double length = moved + r * 2.0 * std::acos(c);
+    const double length = motion_metric(point, q, tree[i].point, tree[i].rotation, context_.space.radius);
     if (length < best_length) {
       best_length = length;
       best = static_cast<std::int32_t>(i);
     }
   }
   return best;
+}
+
+std::int32_t TreeSearch::nearest(int tree, const Pose& pose) const {
+  const std::vector<TreeNode>& nodes = trees_[tree];
+  return index_[tree].nearest(context_.reference_at(pose), pose.quaternion(), [&](std::size_t i) { return !nodes[i].dead; });
+}
+
+void TreeSearch::add_node(int tree, const TreeNode& node) {
+  trees_[tree].push_back(node);
+  index_[tree].add(node.point, node.rotation);
 }
 
 std::optional<TreeNode> TreeSearch::step_toward(const TreeNode& from, const Pose& target, bool& reached,
@@ -369,7 +375,7 @@ TreeSearch::Attempt TreeSearch::attempt(int grow, const Pose& target, std::uint6
   }
   if (trees_[grow].empty()) return out;
   const std::vector<TreeNode>& mine = trees_[grow];
-  const std::int32_t from = nearest(mine, target);
+  const std::int32_t from = nearest(grow, target);
   bool reached = false;
   // Every fourth sample moves along one axis or turns in place (`lattice_move`).
   const Pose aim = index % 4 == 3 ? lattice_move(mine[from], target, index / 4 % 2 == 1) : target;
@@ -442,7 +448,7 @@ void TreeSearch::reach_for(int grow, Attempt& out, int max_steps, Suspects& susp
   // The other tree reaches for the new node, step after step, until it gets there or is blocked.
   const std::vector<TreeNode>& other = trees_[1 - grow];
   if (other.empty()) return;
-  std::int32_t parent = nearest(other, grown.pose);
+  std::int32_t parent = nearest(1 - grow, grown.pose);
   TreeNode at = other[parent];
   for (int k = 0; k < max_steps && !stopped(); ++k) {
     const std::size_t before = out.chain.size();
@@ -458,13 +464,13 @@ void TreeSearch::reach_for(int grow, Attempt& out, int max_steps, Suspects& susp
   }
 }
 
-std::int32_t TreeSearch::append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain) {
-  const auto base = static_cast<std::int32_t>(tree.size());
+std::int32_t TreeSearch::append(int tree, const std::vector<TreeNode>& chain) {
+  const auto base = static_cast<std::int32_t>(trees_[tree].size());
   for (TreeNode n : chain) {
     if (n.parent <= -2) n.parent = base + (-2 - n.parent);
-    tree.push_back(n);
+    add_node(tree, n);
   }
-  return static_cast<std::int32_t>(tree.size() - 1);
+  return static_cast<std::int32_t>(trees_[tree].size() - 1);
 }
 
 std::vector<TreeSearch::Waypoint> TreeSearch::waypoints(int tree_a, std::int32_t node_a, int tree_b, std::int32_t node_b) const {
@@ -693,10 +699,10 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
     // has its lazy edges certified here, in order; the edges that fail are cut.
     for (Attempt& a : attempts) {
       context_.edges_checked += a.edges;
-      if (a.root && trees_[1].size() < kGoalRoots) trees_[1].push_back(*a.root);
+      if (a.root && trees_[1].size() < kGoalRoots) add_node(1, *a.root);
       if (a.grown.empty()) continue;
       const std::size_t grown_first = trees_[grow].size();
-      const std::int32_t grown = append(trees_[grow], a.grown);
+      const std::int32_t grown = append(grow, a.grown);
       propagate_dead(trees_[grow], grown_first);  // a parent may have died earlier in this round
       if (a.in_region) {
         // The first of the new nodes in the goal region (each is the next one's parent) ends the path.
@@ -713,7 +719,7 @@ std::optional<std::vector<Pose>> TreeSearch::run(TreeOutcome& outcome, std::uint
       }
       if (a.chain.empty() && !a.connected) continue;
       const std::size_t chain_first = trees_[1 - grow].size();
-      const std::int32_t reach = a.chain.empty() ? a.meet : append(trees_[1 - grow], a.chain);
+      const std::int32_t reach = a.chain.empty() ? a.meet : append(1 - grow, a.chain);
       propagate_dead(trees_[1 - grow], chain_first);
       if (a.connected && alive_path(trees_[grow], grown) && alive_path(trees_[1 - grow], reach)) {
         if (auto path = join(grow, grown, 1 - grow, reach)) {

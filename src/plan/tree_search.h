@@ -17,6 +17,7 @@
 // Determinism on every core: samples are drawn in rounds of a fixed count; every extension of
 // a round is computed from the trees as they stood at the start of the round, in parallel, and
 // the results are added in sample order, so the trees are the same at any thread count.
+#include "nearest_index.h"
 #include "plan_context.h"
 
 #include <array>
@@ -119,6 +120,10 @@ class TreeSearch {
   std::int32_t nearest(const std::vector<TreeNode>& tree, const Pose& pose) const;
 
  private:
+  /// nearest() over trees_[tree], by its index (the same answer).
+  std::int32_t nearest(int tree, const Pose& pose) const;
+  /// Appends `node` to trees_[tree], and to its index.
+  void add_node(int tree, const TreeNode& node);
   struct Step;
   struct Attempt;
   TreeNode make_node(const Pose& pose, double distance, std::int32_t parent) const;
@@ -164,7 +169,7 @@ class TreeSearch {
   /// largest displacement toward the target. Aligned parts pass aligned passages so.
   Pose lattice_move(const TreeNode& from, const Pose& target, bool turn) const;
   /// Appends an attempt's chain to `tree`; the index of its last node.
-  static std::int32_t append(std::vector<TreeNode>& tree, const std::vector<TreeNode>& chain);
+  std::int32_t append(int tree, const std::vector<TreeNode>& chain);
   bool inside(const Pose& pose) const;
   /// Out of time, or cancelled: a step loop stops (the round's results are then not used,
   /// or the search is over).
@@ -207,6 +212,7 @@ class TreeSearch {
   double step_ = 1.0;       ///< longest step beyond a node's free ball
   double min_step_ = 1e-3;  ///< shortest step tried
   std::array<std::vector<TreeNode>, 2> trees_;
+  std::array<NearestIndex, 2> index_;  ///< of trees_[t]'s points and rotations
   std::uint64_t sample_index_ = 0;
   std::array<std::uint64_t, 2> seed_index_{};  ///< seeds done, per tree
   std::array<std::array<std::optional<Turn>, 24>, 2> turns_;  ///< per tree and orientation, once computed
