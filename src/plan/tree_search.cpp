@@ -111,7 +111,9 @@ struct TreeSearch::Attempt {
 };
 
 TreeSearch::TreeSearch(PlanContext& context, const Pose& start, double start_distance, double goal_distance)
-    : context_(context), index_{NearestIndex(context.space.radius), NearestIndex(context.space.radius)} {
+    : context_(context),
+      nearest_radius_(kNearestTurnWeight * context.space.radius),
+      index_{NearestIndex(nearest_radius_), NearestIndex(nearest_radius_)} {
   const Problem& problem = context.problem;
   const SearchSpace& space = context.space;
   region_ = problem.goal_outside || !problem.goal;
@@ -204,7 +206,7 @@ std::int32_t TreeSearch::nearest(const std::vector<TreeNode>& tree, const Pose& 
   double best_length = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < tree.size(); ++i) {
     if (tree[i].dead) continue;
-    const double length = motion_metric(point, q, tree[i].point, tree[i].rotation, context_.space.radius);
+    const double length = motion_metric(point, q, tree[i].point, tree[i].rotation, nearest_radius_);
     if (length < best_length) {
       best_length = length;
       best = static_cast<std::int32_t>(i);

@@ -116,7 +116,16 @@ class TreeSearch {
   /// it.
   Pose sample(std::uint64_t i) const;
 
-  /// Index of the node of `tree` nearest to `pose` in the motion metric (ties: the lowest index).
+  /// The nearest node is by the motion metric with its rotation's part weighted by this: by
+  /// r/2, about the mean displacement of the body's points in a turn, not r, its farthest
+  /// point's. Against 1, medians over seeds 0-19 at two threads (2026-12-02): OMPL.app's
+  /// cubicles 412 -> 231 ms, Home 792 -> 769, Twistycool 134 -> 108, Abstract 128 -> 93;
+  /// Twistycooler at seeds 0-2 9.8, 37.6, 51.9 -> 4.9, 6.5, 19.6 s; the suite's spiral tube
+  /// 1.11 -> 0.83 s (seeds 0-9); the suite's other problems and the CAD scenes within their
+  /// noise. 0.35: Abstract 176 ms. docs/bench-plan.md.
+  static constexpr double kNearestTurnWeight = 0.5;
+  /// Index of the node of `tree` nearest to `pose` in the motion metric, the rotation's part
+  /// weighted by kNearestTurnWeight (ties: the lowest index).
   std::int32_t nearest(const std::vector<TreeNode>& tree, const Pose& pose) const;
 
  private:
@@ -212,6 +221,7 @@ class TreeSearch {
   double step_ = 1.0;       ///< longest step beyond a node's free ball
   double min_step_ = 1e-3;  ///< shortest step tried
   std::array<std::vector<TreeNode>, 2> trees_;
+  double nearest_radius_;  ///< kNearestTurnWeight × the search space's radius
   std::array<NearestIndex, 2> index_;  ///< of trees_[t]'s points and rotations
   std::uint64_t sample_index_ = 0;
   std::array<std::uint64_t, 2> seed_index_{};  ///< seeds done, per tree
