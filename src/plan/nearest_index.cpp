@@ -49,7 +49,7 @@ std::int32_t NearestIndex::build(std::uint32_t begin, std::uint32_t end) {
   for (int d = 1; d < 7; ++d)
     if (cell.hi[d] - cell.lo[d] > cell.hi[axis] - cell.lo[axis]) axis = d;
   const std::uint32_t mid = begin + (end - begin) / 2;
-  // Ties broken by index: the same tree from the same nodes, whatever the library's partition.
+  // Ties by index make the build reproducible; the answers do not depend on the tree's shape.
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
     return keys_[a][axis] < keys_[b][axis] || (keys_[a][axis] == keys_[b][axis] && a < b);
   });

@@ -44,7 +44,7 @@ class NearestIndex {
   std::int32_t nearest(const Vec3& point, const Quat& rotation, const Keep& keep) const;
 
  private:
-  using Key = std::array<double, 7>;  ///< the point, then the quaternion (w, x, y, z) times 2r
+  using Key = std::array<double, 7>;  ///< the point, then the quaternion (w, x, y, z; w ≥ 0) times 2r
   struct Cell {
     Key lo, hi;                ///< the bounding box of the cell's keys
     std::uint32_t begin, end;  ///< the cell's range of order_
