@@ -17,7 +17,6 @@ void NearestIndex::add(const Vec3& point, const Quat& rotation) {
   // q and −q are one rotation: keys on the half w ≥ 0 (the bound takes both signs of the query).
   const double s = rotation.w() < 0.0 ? -2.0 * radius_ : 2.0 * radius_;
   keys_.push_back({point.x(), point.y(), point.z(), s * rotation.w(), s * rotation.x(), s * rotation.y(), s * rotation.z()});
-  points_.push_back(point);
   rotations_.push_back(rotation);
   if (keys_.size() - indexed_ > std::max(kScannedMin, keys_.size() / kScannedShare)) rebuild();
 }

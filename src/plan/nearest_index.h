@@ -55,9 +55,8 @@ class NearestIndex {
   void rebuild();
 
   double radius_;
-  std::vector<Key> keys_;
-  std::vector<Vec3> points_;
-  std::vector<Quat> rotations_;
+  std::vector<Key> keys_;         ///< the points exactly, as the metric reads them
+  std::vector<Quat> rotations_;  ///< the rotations as given (the keys' are scaled and signed)
   std::vector<std::uint32_t> order_;  ///< the indexed nodes, cell by cell
   std::vector<Cell> cells_;           ///< cells_[0] the root, when there is one
   std::size_t indexed_ = 0;           ///< nodes [0, indexed_) are in the k-d tree
@@ -76,7 +75,8 @@ struct NearestIndex::Query {
   // cell or node is skipped only when the exact answer would not take it.
   template <class Keep>
   void consider(std::uint32_t i, const Keep& keep) {
-    const Vec3& p = index.points_[i];
+    const Key& k = index.keys_[i];
+    const Vec3 p(k[0], k[1], k[2]);
     const double moved_sq = (p - point).squaredNorm();
     if (moved_sq > best_length * best_length * (1.0 + 1e-9)) return;
     const double c = std::min(1.0, std::abs(rotation.dot(index.rotations_[i])));
