@@ -25,17 +25,15 @@ struct Minimum {
 // The smallest exact distance along a segment (pose_at(t), t in [0, 1]) with exact end values
 // `d0`, `d1`: 15 samples in between, then a golden-section search around the smallest. A sample
 // only matters when it is below the smallest so far, so its query stops as soon as it proves it
-// is not (`below` gives +∞ then). `relaxed`: with the exempt pairs left out. `apart`: the
-// segment is certified free, so its queries skip the first-contact search.
+// is not (`below` gives +∞ then). `relaxed`: with the exempt pairs left out.
 template <class PoseAt>
-Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, double d1, bool relaxed,
-                        bool apart = false) {
+Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, double d1, bool relaxed) {
   constexpr int kSamples = 16;
   int best = 0;
   Minimum m{d0, 0.0};
   for (int k = 1; k < kSamples; ++k) {
     const double t = static_cast<double>(k) / kSamples;
-    const double d = check.below(pose_at(t), m.value, relaxed, apart);
+    const double d = check.below(pose_at(t), m.value, relaxed);
     if (d < m.value) m = {d, t}, best = k;
   }
   if (d1 < m.value) m = {d1, 1.0}, best = kSamples;
@@ -45,10 +43,10 @@ Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, 
   double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
   const double g = (std::sqrt(5.0) - 1.0) / 2.0;
   double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-  double f1 = check.exact(pose_at(x1), relaxed, apart), f2 = check.below(pose_at(x2), f1, relaxed, apart);
+  double f1 = check.exact(pose_at(x1), relaxed), f2 = check.below(pose_at(x2), f1, relaxed);
   for (int it = 0; it < 24; ++it) {
-    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check.below(pose_at(x1), f2, relaxed, apart);
-    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check.below(pose_at(x2), f1, relaxed, apart);
+    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check.below(pose_at(x1), f2, relaxed);
+    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check.below(pose_at(x2), f1, relaxed);
   }
   if (f1 < m.value) m = {f1, x1};
   if (f2 < m.value) m = {f2, x2};
@@ -114,8 +112,8 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
       // The waypoints' exact distances are the certificate's end bounds.
       sc.certified = certify(at_waypoint[i], at_waypoint[i + 1], false);
     }
-    // A certified segment (not an escape, whose exempt pairs may touch) is free throughout.
-    const Minimum m = sampled_minimum(check, pose_at, at_waypoint[i], at_waypoint[i + 1], false, sc.certified && !sc.escape);
+    // The smallest distance along the segment, reported beside the certificate's verdict.
+    const Minimum m = sampled_minimum(check, pose_at, at_waypoint[i], at_waypoint[i + 1], false);
     sc.min_distance = m.value;
     sc.t_min = m.t;
     if (!sc.certified) {

@@ -9,17 +9,17 @@
 namespace swept::detail {
 
 DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint, bool decide,
-                              bool apart, std::span<const DistanceHint> suspects) const {
+                              std::span<const DistanceHint> suspects) const {
   ++distance_queries_;
   const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint,
                                 .stop_below = decide && decide_blocked_ ? margin_ : -std::numeric_limits<double>::infinity(),
-                                .suspects = suspects, .apart = apart};
+                                .suspects = suspects};
   return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
 }
 
 DistanceResult Checker::measure(const Pose& pose, double enough, Suspects* suspects) const {
   if (!suspects) return query(pose, enough, false);
-  const DistanceResult r = query(pose, enough, false, {}, true, false, suspects->pairs);
+  const DistanceResult r = query(pose, enough, false, {}, true, suspects->pairs);
   suspects->add(r.hint);
   return r;
 }
@@ -43,11 +43,11 @@ bool Checker::blocked_at_samples(const Pose& a, const Pose& b) const {
 }
 
 DistanceResult Checker::nearest(const Pose& pose, double enough) const {
-  return query(pose, enough, false, {}, false, /*apart=*/true);
+  return query(pose, enough, false, {}, false);
 }
 
-double Checker::below(const Pose& pose, double bound, bool relaxed, bool apart) const {
-  const DistanceResult d = query(pose, bound, relaxed, {}, false, apart);
+double Checker::below(const Pose& pose, double bound, bool relaxed) const {
+  const DistanceResult d = query(pose, bound, relaxed, {}, false);
   return d.exact ? d.distance : std::numeric_limits<double>::infinity();
 }
 

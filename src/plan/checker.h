@@ -75,14 +75,13 @@ class Checker {
   /// pair left is proved farther than the margin (nothing else is asked of it).
   bool free(const Pose& pose) const;
   /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
-  /// `apart`: the pose is known free (on a certified motion), so no first-contact search.
-  double below(const Pose& pose, double bound, bool relaxed = false, bool apart = false) const;
+  double below(const Pose& pose, double bound, bool relaxed = false) const;
   /// The distance at `pose`, known free (a tree node), with its witness points (world), exact
   /// below `enough` (counted).
   DistanceResult nearest(const Pose& pose, double enough) const;
   /// Exact distance at `pose` (for reporting clearance).
-  double exact(const Pose& pose, bool relaxed = false, bool apart = false) const {
-    return below(pose, std::numeric_limits<double>::infinity(), relaxed, apart);
+  double exact(const Pose& pose, bool relaxed = false) const {
+    return below(pose, std::numeric_limits<double>::infinity(), relaxed);
   }
 
   /// The straight motion a → b about the checker's reference point.
@@ -139,10 +138,9 @@ class Checker {
 
  private:
   /// One counted distance query against the obstacles (relaxed: the exempt pairs left out;
-  /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on;
-  /// `apart`: the pose is known free, DistanceRequest::apart).
+  /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on).
   DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}, bool decide = true,
-                       bool apart = false, std::span<const DistanceHint> suspects = {}) const;
+                       std::span<const DistanceHint> suspects = {}) const;
 
   const PlanScene& scene_;
   double margin_;

@@ -339,26 +339,11 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
     if (d.distance < request.upper_bound) warm.take(d, h.a, h.b);
   }
 
-  // Overlapping models: a first-contact search found a touching pair far faster than the distance
-  // search singled out a zero among many near-zero bounds (measured before that search ended at its
-  // first touching pair; its pairs were then all visited). It costs little when the models
-  // are apart (most node pairs are rejected near the root); skipping it after a hint that is not a
-  // contact made queries along motions into contact 2.4x slower. (Not with pairs left out: the
-  // first contact may be one of them; not when the caller knows the models apart; not with a
-  // stop_below, where the search ends at its first pair below the threshold or, for a threshold
-  // of 0 or less such as the planner's at a clearance of 0, at its first touching pair, as the
-  // contact search would: on OMPL.app's cubicles and Home and on the suite's .cfg files, plans
-  // 2-24 % faster than with the contact search first, the same answers and paths.)
-  const bool contact_first = !(request.exclude || request.exclude_if) && !(request.stop_below > -kInf) && !request.apart;
+  // No first-contact search before the distance search: the search ends at its first touching
+  // pair, and near contact the contact search's node pairs (every pair of overlapping RSSs) are
+  // ones the distance search must open anyway, so running it first only doubled them (a third of
+  // a near-contact query's time; docs/fitters.md, "No contact search first").
   warm.stop_below = cold.stop_below = request.stop_below;
-  std::int32_t ci = -1, cj = -1;
-  const CollideResult contact = contact_first ? collide_relative(a, b, rel, {}, &ci, &cj) : CollideResult{};
-  warm.stats.bv_tests += contact.stats.bv_tests;
-  warm.stats.triangle_tests += contact.stats.triangle_tests;
-  if (contact.colliding) {
-    const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
-    if (d.distance < request.upper_bound && (!warm.have_witness || d.distance < warm.best)) warm.take(d, ci, cj);
-  }
   if (warm.have_witness && warm.best == 0.0) {
     used = &warm;  // nothing is closer than 0
   } else if (warm.have_witness || request.upper_bound < kInf) {

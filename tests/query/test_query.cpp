@@ -168,21 +168,6 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
       EXPECT_EQ(dx.distance, d.distance);
       EXPECT_LE(point_triangle_closest(pa.apply_inverse(dx.point_a), s.a[dx.triangle_a]).distance, wtol);
 
-      // Apart: the caller's word skips the first-contact search (fewer tests: it costs at least
-      // the root pair's); the same answer and witness when the models are apart, and still the
-      // exact 0 when they overlap after all.
-      const DistanceResult dp = distance(a, pa, b, pb, {.apart = true});
-      if (d.distance > 0.0) {
-        EXPECT_EQ(dp.distance, d.distance);
-        EXPECT_EQ(dp.triangle_a, d.triangle_a);
-        EXPECT_EQ(dp.triangle_b, d.triangle_b);
-        EXPECT_EQ(dp.point_a, d.point_a);
-        EXPECT_LT(dp.stats.bv_tests, d.stats.bv_tests);
-      } else {
-        EXPECT_EQ(dp.distance, 0.0);
-        EXPECT_TRUE(dp.exact);
-      }
-
       // Early exit: a lower bound ≥ enough when the distance is at least that, else exact.
       for (const double enough : {0.5 * bd.distance, 2.0 * bd.distance + 1e-6}) {
         const DistanceResult de = distance(a, pa, b, pb, {.enough = enough});
@@ -216,11 +201,9 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
       }
 
       // A stop_below of 0 or less, which no distance is below (the planner at a clearance of 0):
-      // the exact distance, as without it, with a witness at that distance. Without the contact
-      // search (skipped with a stop_below, or when the caller says the models are apart) a
-      // touching pose ends the distance search at its first touching pair: still exactly 0.
-      for (const DistanceRequest& request : {DistanceRequest{.stop_below = 0.0}, DistanceRequest{.stop_below = -1.0},
-                                            DistanceRequest{.apart = true}}) {
+      // the exact distance, as without it, with a witness at that distance. A touching pose ends
+      // the distance search at its first touching pair: still exactly 0.
+      for (const DistanceRequest& request : {DistanceRequest{.stop_below = 0.0}, DistanceRequest{.stop_below = -1.0}}) {
         const DistanceResult w = distance(a, pa, b, pb, request);
         EXPECT_TRUE(w.exact);
         EXPECT_NEAR(w.distance, bd.distance, 1e-12 * bd.distance);

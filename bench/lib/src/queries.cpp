@@ -236,9 +236,9 @@ void run_queries_benchmark(const QueriesOptions& o, std::ostream& out, std::ostr
   }
   table.print(out);
   out << "\n(Times are the mean thread CPU time per query. FCL has no tolerance query: its column is\n"
-               " a distance query and a comparison. BV tests: swept counts every RSS pair test of the query,\n"
-               " its first-contact search included; FCL its traversal node's num_bv_tests, the same query run\n"
-               " as fcl::distance (or fcl::collide) runs it. FCL's RSS collide copies both models and\n"
+               " a distance query and a comparison. BV tests: swept counts every RSS pair test of the query;\n"
+               " FCL its traversal node's num_bv_tests, the same query run as fcl::distance (or\n"
+               " fcl::collide) runs it. FCL's RSS collide copies both models and\n"
                " transforms their vertices on every call, hence its time; its node pairs are not counted.)\n"
             << "largest relative distance difference vs FCL: " << fmt_sci(max_rel_diff) << "\n"
             << "collide answers that differ from FCL OBBRSS's: " << collide_disagreements << " of "

@@ -80,11 +80,9 @@ struct DistanceRequest {
   DistanceHint hint{};
   /// Early exit for callers that only need to know the distance is below this much: as soon as
   /// a triangle pair closer than `stop_below` is found, stop; then `distance` is that pair's
-  /// distance (< stop_below, and ≥ the true distance) and `exact` is false. (The first-contact
-  /// search that otherwise starts every query is skipped: a pair below the threshold ends the
-  /// search as a contact would. With a stop_below of 0 or less, which no distance is below, the
-  /// answer is exact, as without it; the search still ends at its first touching pair, as every
-  /// distance search does.)
+  /// distance (< stop_below, and ≥ the true distance) and `exact` is false. (With a stop_below
+  /// of 0 or less, which no distance is below, the answer is exact, as without it; the search
+  /// still ends at its first touching pair, as every distance search does.)
   double stop_below = -std::numeric_limits<double>::infinity();
   /// With `stop_below`: triangle pairs (positions in the trees, as `DistanceResult::hint`) tried
   /// before anything else, for instance the pairs that blocked nearby poses. The first one closer
@@ -93,11 +91,6 @@ struct DistanceRequest {
   /// below `stop_below` answers exactly as without them. Pairs out of range or left out are
   /// ignored. Not owned.
   std::span<const DistanceHint> suspects{};
-  /// The caller knows the models are apart (a pose on a certified motion, a node of a search
-  /// tree): the first-contact search that otherwise starts every query is skipped. The answer
-  /// is the same, witness included; only the work differs (were they to overlap after all, the
-  /// distance search is slower to single out a zero than the contact search).
-  bool apart = false;
 };
 struct DistanceResult {
   double distance = std::numeric_limits<double>::infinity();
