@@ -32,9 +32,7 @@ void sort_pairs(std::vector<ContactPair>& pairs) { std::sort(pairs.begin(), pair
 
 /// Collision traversal: separated when some projection gap exceeds the radii (+ contact
 /// tolerance), exactly like an OBB separating-axis test.
-CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
-                               const CollideRequest& request, std::int32_t* first_a = nullptr,
-                               std::int32_t* first_b = nullptr) {
+CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel, const CollideRequest& request) {
   CollideResult out;
   if (a.empty() || b.empty()) return out;
   const detail::Roots roots(a, b, rel);
@@ -58,10 +56,6 @@ CollideResult collide_relative(const Bvh& a, const Bvh& b, const Relative& rel,
         if (!triangles_intersect(a.triangles[i], tb)) continue;
         out.colliding = true;
         out.contacts.push_back({a.triangle_ids[i], b.triangle_ids[j]});
-        if (first_a && out.contacts.size() == 1) {
-          *first_a = i;
-          *first_b = j;
-        }
         if (!request.all_contacts) return false;
       }
     }
@@ -441,25 +435,10 @@ ToleranceResult tolerance(const Bvh& a, const Pose& pose_a, const Bvh& b, const 
   if (a.empty() || b.empty() || !(request.tolerance > 0.0)) return out;
   const Relative rel(pose_a, pose_b);
   const double tol = request.tolerance;
-  // A contact answers at once; otherwise the distance search, pruning at the tolerance and
-  // stopping at the first triangle pair closer than it.
-  std::int32_t ci = -1, cj = -1;
-  const CollideResult contact = collide_relative(a, b, rel, {}, &ci, &cj);
-  out.stats = contact.stats;
-  if (contact.colliding) {
-    const TriangleDistance d = triangle_distance(a.triangles[ci], rel.apply(b.triangles[cj]));
-    if (d.distance < tol) {
-      out.within = true;
-      out.distance = d.distance;
-      out.point_a = pose_a.apply(d.point_a);
-      out.point_b = pose_a.apply(d.point_b);
-      out.triangle_a = a.triangle_ids[ci];
-      out.triangle_b = b.triangle_ids[cj];
-      return out;
-    }
-  }
+  // The distance search, pruning at the tolerance and stopping at the first triangle pair closer
+  // than it (depth first). No first-contact search before it, as in distance(): overlapping
+  // RSSs bound 0, below any tolerance, so it would only visit pairs this search visits too.
   DistanceSearch s(a, b, rel, 0.0, 0.0, kInf);
-  s.stats = out.stats;
   s.set_best(tol);
   s.stop_at_first = true;
   s.run();

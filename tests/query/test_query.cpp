@@ -223,6 +223,17 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         EXPECT_NEAR((in.point_a - in.point_b).norm(), in.distance, wtol);
         const ToleranceResult out = tolerance(a, pa, b, pb, {.tolerance = bd.distance * 0.99});
         EXPECT_FALSE(out.within);
+      } else {
+        // Overlapping: within any tolerance, with a witness pair (any pair closer than it, the
+        // search stops at the first) whose points lie on their triangles.
+        for (const double t : {1e-9, 0.1}) {
+          const ToleranceResult in = tolerance(a, pa, b, pb, {.tolerance = t});
+          EXPECT_TRUE(in.within);
+          EXPECT_LT(in.distance, t);
+          EXPECT_NEAR((in.point_a - in.point_b).norm(), in.distance, wtol);
+          EXPECT_LE(point_triangle_closest(pa.apply_inverse(in.point_a), s.a[in.triangle_a]).distance, wtol);
+          EXPECT_LE(point_triangle_closest(pb.apply_inverse(in.point_b), s.b[in.triangle_b]).distance, wtol);
+        }
       }
 
       // Proximity pairs: exactly the pairs closer than the threshold; then the distance with
