@@ -106,6 +106,7 @@ void run(const PlanCliOptions& o) {
                      {"cpu", cpu}}},
         {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}, {"sweep", r.queries.sweep}}},
         {"path_hash", hex(r.path_hash)},
+        {"notes", problem->notes},
         {"seed", problem->seed},
         {"unit", problem->unit},
         {"fitter", std::string(to_string(problem->build.fitter))},
@@ -115,8 +116,9 @@ void run(const PlanCliOptions& o) {
         {"edges_checked", r.edges_checked}};
     std::cout << doc.dump(2) << "\n";
   } else {
-    std::cout << "problem      " << o.problem << "\n"
-              << "meshes       obstacles " << scene->obstacles.triangles.size() << " triangles, body "
+    std::cout << "problem      " << o.problem << "\n";
+    for (const std::string& note : problem->notes) std::cout << "note         " << note << "\n";
+    std::cout << "meshes       obstacles " << scene->obstacles.triangles.size() << " triangles, body "
               << scene->body.triangles.size() << " triangles (fitter " << to_string(problem->build.fitter) << ", split "
               << to_string(problem->build.split) << ", leaf size " << problem->build.leaf_size << ")\n"
               << "result       " << r.message << "\n";

@@ -186,6 +186,9 @@ prints (naming the file, the line and the key) on bad input.)doc")
             for (const auto& r : p.problem.obstacles) v.push_back(r.file.string());
             return v;
           })
+      .def_property_readonly("notes", [](const PyProblem& p) { return p.problem.notes; },
+                             "What the file asks for that swept does not do (an OMPL.app .cfg's settings for "
+                             "OMPL's planners), one line each naming the file and line, as `swept plan` prints them")
       .def_property_readonly("body_files", [](const PyProblem& p) {
             std::vector<std::string> v;
             for (const auto& r : p.problem.body) v.push_back(r.file.string());

@@ -19,13 +19,17 @@ namespace fs = std::filesystem;
 
 // OMPL.app's .cfg: an INI file with a [problem] section (robot, world, start.*, goal.*,
 // volume.*); angles in radians about an axis. OMPL.app reads it with boost::program_options,
-// which rejects a key given twice and ignores keys it does not know; so do we.
+// which rejects a key given twice and ignores keys it does not know; so do we. The settings
+// OMPL.app passes to OMPL's planners (its benchmark's CFGBenchmark: the state sampler, the goal
+// threshold, an optimization objective, run limits and the planners to run) mean nothing to
+// swept's planner: each one present becomes a note (Problem::notes), so that a user is told.
 Result<Problem> load_cfg(const fs::path& file) {
   std::ifstream in(file);
   if (!in) return Error{file.string() + ": cannot open"};
   const std::string name = file.string();
   auto at = [&](int line) { return name + ":" + std::to_string(line) + ": "; };
   std::map<std::string, std::pair<std::string, int>> kv;  // key → (value, line)
+  std::map<std::string, int> other_sections;               // [benchmark], [planner]: first line
   std::string line, section;
   int lineno = 0;
   auto trim = [](std::string s) {
@@ -41,6 +45,7 @@ Result<Problem> load_cfg(const fs::path& file) {
     if (line.front() == '[') {
       if (line.back() != ']') return Error{at(lineno) + "malformed section header"};
       section = trim(line.substr(1, line.size() - 2));
+      if (section != "problem") other_sections.try_emplace(section, lineno);
       continue;
     }
     const auto eq = line.find('=');
@@ -159,6 +164,29 @@ Result<Problem> load_cfg(const fs::path& file) {
   }
   if (p.bounds && (p.bounds->min.array() >= p.bounds->max.array()).any())
     return Error{name + ": volume.min must be below volume.max on every axis"};
+  const std::pair<const char*, const char*> unused[] = {
+      {"objective", "OMPL's optimization objective, not used: swept certifies a path and shortens it by "
+                    "smoothing, it does not optimize a cost"},
+      {"objective.threshold", "OMPL's cost threshold, not used (no cost is optimized)"},
+      {"sampler", "OMPL's valid-state sampler, not used: swept's planner samples on its own"},
+      {"threshold", "OMPL's goal threshold, not used: swept's path ends exactly at the goal pose"},
+  };
+  std::vector<std::pair<int, std::string>> notes;
+  for (const auto& [key, why] : unused)
+    if (auto it = kv.find(key); it != kv.end())
+      notes.emplace_back(it->second.second, at(it->second.second) + key + " = " + it->second.first + ": " + why);
+  if (!other_sections.empty()) {
+    std::string names;
+    int first = std::numeric_limits<int>::max();
+    for (const auto& [sec, l] : other_sections) {
+      names += (names.empty() ? "[" : " and [") + sec + "]";
+      first = std::min(first, l);
+    }
+    notes.emplace_back(first, at(first) + names + ": OMPL.app's benchmark settings and OMPL's planners, not used: "
+                                              "swept plans with its own planner (`swept plan --time-limit` sets its limit)");
+  }
+  std::sort(notes.begin(), notes.end());
+  for (auto& [l, text] : notes) p.notes.push_back(std::move(text));
   return p;
 }
 

@@ -80,6 +80,7 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   EXPECT_GT(doc["time_ms"]["cpu"].get<double>(), 0.0);  // the planner's threads' time, after the build
   for (const char* key : {"distance", "proximity", "sweep"}) EXPECT_TRUE(doc["queries"].contains(key)) << key;
   EXPECT_TRUE(doc["solved"].get<bool>());
+  EXPECT_TRUE(doc["notes"].is_array() && doc["notes"].empty());  // a TOML asks nothing swept ignores
   EXPECT_GE(doc["min_clearance"].get<double>(), 0.1);
   auto path = read_path(dir / "path.json");
   ASSERT_TRUE(path) << path.error().message;

@@ -456,6 +456,36 @@ volume.max.z = 100
                "goal) is flat along z");
 }
 
+// What OMPL.app hands to OMPL's planners (CFGBenchmark: the state sampler, the goal threshold,
+// an optimization objective, the [benchmark] run limits and the [planner] list, as in its own
+// cubicles_opt.cfg, alpha-1.5.cfg and bugtrap.cfg) is read without error and named in a note
+// each, with its line; a file without them has no notes, and the problem is the same either way.
+TEST_F(ProblemFiles, CfgSettingsForOmplsPlannersBecomeNotes) {
+  auto plain = load_problem(write("plain.cfg", kCfg));
+  ASSERT_TRUE(plain) << plain.error().message;
+  EXPECT_TRUE(plain->notes.empty());
+  const std::string text = std::string(kCfg) +
+                           "objective = length\n"           // line 18
+                           "# make PRM act like an optimizing planner:\n"
+                           "objective.threshold = 0\n"      // 20
+                           "sampler=obstacle_based\n"       // 21
+                           "threshold=1e-15\n"              // 22
+                           "\n[benchmark]\ntime_limit=300.0\nrun_count=50\n"  // header on 24
+                           "\n[planner]\nrrt=\nrrt.range=10\naps=\naps=\n";  // 28; a planner twice is OMPL's
+  auto p = load_problem(write("opt.cfg", text));
+  ASSERT_TRUE(p) << p.error().message;
+  ASSERT_EQ(p->notes.size(), 5u);
+  const char* expected[] = {"opt.cfg:18: objective = length: ", "opt.cfg:20: objective.threshold = 0: ",
+                            "opt.cfg:21: sampler = obstacle_based: ", "opt.cfg:22: threshold = 1e-15: ",
+                            "opt.cfg:24: [benchmark] and [planner]: "};
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_NE(p->notes[i].find(expected[i]), std::string::npos) << p->notes[i];
+  EXPECT_NE(p->notes[4].find("--time-limit"), std::string::npos);
+  ASSERT_TRUE(p->goal && plain->goal);
+  EXPECT_EQ(p->start.translation, plain->start.translation);
+  EXPECT_EQ(p->goal->rotation, plain->goal->rotation);
+  EXPECT_DOUBLE_EQ(p->time_limit, plain->time_limit);  // [benchmark] time_limit is not ours
+}
+
 TEST_F(ProblemFiles, CfgDuplicatesZeroAxesAndNonFiniteNumbersAreErrors) {
   ASSERT_TRUE(load_problem(write("good.cfg", kCfg)));
   expect_error(load_problem(write("dup.cfg", std::string(kCfg) + "goal.z = 50\n")), "dup.cfg:18: goal.z: given twice (first on line 13)");

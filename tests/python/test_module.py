@@ -301,6 +301,23 @@ def test_plan_seed_is_another_draw_of_the_trees(tmp_path, swept_cli):
         swept.plan(problem, scene=scene, seed=-2)
 
 
+def test_problem_notes_name_what_a_cfg_asks_of_ompl(tmp_path, swept_cli):
+    # The suite's house writes an OMPL.app .cfg with [benchmark] and [planner] sections; an
+    # `objective` line added to [problem] is a second note. The TOML has none. As `swept plan`.
+    subprocess.run([swept_cli, "scene", "house", "-o", str(tmp_path / "house")], check=True, capture_output=True)
+    assert swept.Problem.load(str(tmp_path / "house" / "problem.toml")).notes == []
+    cfg = tmp_path / "house" / "house.cfg"
+    text = cfg.read_text().replace("[problem]\n", "[problem]\nobjective = length\n", 1)
+    cfg.write_text(text)
+    notes = swept.Problem.load(str(cfg)).notes
+    assert len(notes) == 2
+    assert "objective = length: OMPL's optimization objective, not used" in notes[0]
+    assert "[benchmark] and [planner]" in notes[1] and "house.cfg:" in notes[1]
+    cli = json.loads(subprocess.run([swept_cli, "plan", str(cfg), "--json", "-q"],
+                                    capture_output=True, text=True).stdout)
+    assert cli["notes"] == notes
+
+
 # ---- errors: swept.Error with the command line's message --------------------------------------------
 def cli_error(cli, *args):
     p = subprocess.run([cli, *args], capture_output=True, text=True)

@@ -52,6 +52,10 @@ struct Problem {
   double deflection = 0.1;        ///< default BRepMesh linear deflection for CAD meshes
   /// Triangle budget of each CAD mesh's tessellation (ImportOptions::max_triangles).
   std::size_t max_triangles = ImportOptions{}.max_triangles;
+  /// What the file asks for that swept does not do, one line each, naming the file and line: an
+  /// OMPL.app .cfg's settings for OMPL's own planners (`objective`, `sampler`, `threshold`,
+  /// the [benchmark] and [planner] sections). `swept plan` prints them.
+  std::vector<std::string> notes;
 };
 
 /// Reads a problem: `.toml` (our format) or `.cfg` (OMPL.app). Errors name the file, the line and
