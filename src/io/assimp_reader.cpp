@@ -86,16 +86,47 @@ namespace {
 
 // assimp's glTF 2 importer drops a face whose index is past the vertex list, with only a log
 // message (and fails only when no face is left): compare what each primitive declares with
-// what assimp kept. "" when they agree or the mapping is unknown.
-std::string check_gltf_faces(const std::string& bytes, bool binary, const aiScene& scene) {
+// what assimp kept. assimp makes one mesh per primitive, named like the glTF mesh ("name-k" for
+// primitive k of several), but orders them as the scene first refers to them, not as the file
+// lists them, and reads no mesh that no node uses (Khronos' 2CylinderEngine sample has both). So
+// each of assimp's meshes is matched with a declared primitive of the same vertex count and
+// name (an unnamed one matches any name): one with as many faces when there is one, else one
+// with more, which is the error. "" when every mesh matched one with as many faces or matched
+// none (the mapping is unknown: no error is made up). `warnings` gets the matched TRIANGLES
+// primitives whose count leaves indices past the last whole triangle.
+std::string check_gltf_faces(const std::string& bytes, bool binary, const aiScene& scene,
+                             std::vector<std::string>& warnings) {
   const std::vector<GltfPrimitive> declared = gltf_declared_faces(bytes, binary);
-  if (declared.empty() || declared.size() != scene.mNumMeshes) return {};
-  for (std::size_t i = 0; i < declared.size(); ++i) {
-    const std::size_t kept = scene.mMeshes[i]->mNumFaces;
-    if (kept < declared[i].faces)
-      return "mesh '" + declared[i].mesh + "' (primitive " + std::to_string(i) + "): " +
-             std::to_string(declared[i].faces - kept) + " of its " + std::to_string(declared[i].faces) +
-             " faces refer to vertices past its " + std::to_string(declared[i].vertices) + " vertices";
+  std::vector<bool> matched(declared.size(), false);
+  auto label = [](const GltfPrimitive& p) {
+    return "mesh '" + p.mesh + "' (primitive " + std::to_string(p.primitive) + ")";
+  };
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene.mMeshes[m];
+    const std::string_view name(mesh.mName.C_Str());
+    std::optional<std::size_t> same, more;
+    for (std::size_t i = 0; i < declared.size() && !same; ++i) {
+      const GltfPrimitive& p = declared[i];
+      if (matched[i] || p.vertices != mesh.mNumVertices) continue;
+      if (!p.mesh.empty() && name != (p.primitives > 1 ? p.mesh + "-" + std::to_string(p.primitive) : p.mesh))
+        continue;
+      if (p.faces == mesh.mNumFaces)
+        same = i;
+      else if (p.faces > mesh.mNumFaces && !more)
+        more = i;
+    }
+    if (same) {
+      matched[*same] = true;
+      const GltfPrimitive& p = declared[*same];
+      if (p.leftover > 0)
+        warnings.push_back(label(p) + ": TRIANGLES with " + std::to_string(3 * p.faces + p.leftover) +
+                           " indices (or vertices), not a multiple of 3: the last " + std::to_string(p.leftover) +
+                           " make no triangle and are left out");
+    } else if (more) {
+      const GltfPrimitive& p = declared[*more];
+      return label(p) + ": " + std::to_string(p.faces - mesh.mNumFaces) + " of its " + std::to_string(p.faces) +
+             " faces refer to vertices past its " + std::to_string(p.vertices) + " vertices";
+    }
   }
   return {};
 }
@@ -212,8 +243,11 @@ Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>&
     if (ext == ".gltf" || ext == ".glb") {
       Result<std::string> bytes = read_file_bytes(ctx.file, ctx.display);
       if (!bytes) return bytes.error();
-      if (std::string err = check_gltf_faces(*bytes, ext == ".glb", *scene); !err.empty())
+      std::vector<std::string> notes;
+      if (std::string err = check_gltf_faces(*bytes, ext == ".glb", *scene, notes); !err.empty())
         return file_error(ctx.display, err);
+      if (ctx.warnings != nullptr)
+        for (const std::string& note : notes) ctx.warnings->push_back(ctx.display + ": " + note);
     }
     const std::string stem = ctx.file.stem().string();
     if (std::string err = collect(*scene, *scene->mRootNode, Affine::Identity(), ctx.file_to_output, stem, parts);

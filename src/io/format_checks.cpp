@@ -328,9 +328,13 @@ std::vector<GltfPrimitive> gltf_declared_faces(const std::string& bytes, bool bi
     const auto& accessors = doc.at("accessors");
     auto count = [&](const nlohmann::json& index) { return accessors.at(index.get<std::size_t>()).at("count").get<std::size_t>(); };
     for (const auto& mesh : doc.value("meshes", nlohmann::json::array())) {
-      for (const auto& prim : mesh.at("primitives")) {
+      const auto& primitives = mesh.at("primitives");
+      for (std::size_t k = 0; k < primitives.size(); ++k) {
+        const auto& prim = primitives.at(k);
         GltfPrimitive p;
         p.mesh = mesh.value("name", std::string());
+        p.primitive = k;
+        p.primitives = primitives.size();
         p.vertices = count(prim.at("attributes").at("POSITION"));
         const std::size_t n = prim.contains("indices") ? count(prim.at("indices")) : p.vertices;
         switch (prim.value("mode", 4)) {
@@ -338,7 +342,10 @@ std::vector<GltfPrimitive> gltf_declared_faces(const std::string& bytes, bool bi
           case 1: p.faces = n / 2; break;               // lines
           case 2: p.faces = n; break;                   // line loop
           case 3: p.faces = n > 0 ? n - 1 : 0; break;   // line strip
-          case 4: p.faces = n / 3; break;               // triangles
+          case 4:  // triangles
+            p.faces = n / 3;
+            p.leftover = n % 3;
+            break;
           default: p.faces = n > 2 ? n - 2 : 0; break;  // triangle strip, fan
         }
         out.push_back(p);

@@ -43,12 +43,18 @@ std::optional<Error> precheck(const ReadContext& ctx);
 std::string check_iges(const std::string& bytes);
 
 /// glTF 2: the faces each primitive declares (its index count, or its vertex count without
-/// indices, by its mode), one entry per primitive in file order, as assimp's importer makes one
-/// mesh per primitive. Empty when the file is not glTF 2 JSON we can read (assimp then reports).
+/// indices, by its mode), one entry per primitive in file order (assimp's importer makes one
+/// mesh per primitive, but orders them as the scene first refers to them). Empty when the file
+/// is not glTF 2 JSON we can read (assimp then reports).
 struct GltfPrimitive {
-  std::string mesh;
+  std::string mesh;            ///< the mesh's name ("" when it has none)
+  std::size_t primitive = 0;   ///< its index among the mesh's primitives
+  std::size_t primitives = 1;  ///< how many primitives the mesh has
   std::size_t faces = 0;
   std::size_t vertices = 0;
+  /// TRIANGLES only: indices (or vertices) past the last whole triangle, count mod 3 (the Khronos
+  /// validator's MESH_PRIMITIVE_INCOMPATIBLE_MODE, a warning); they make no triangle.
+  std::size_t leftover = 0;
 };
 std::vector<GltfPrimitive> gltf_declared_faces(const std::string& bytes, bool binary);
 

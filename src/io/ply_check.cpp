@@ -113,7 +113,9 @@ std::string check_ply(const std::string& bytes) {
     } else if (tok[0] == "end_header") {
       ended = true;
     } else {
-      return at + "unexpected header keyword " + quoted(tok[0]);
+      return at + "unexpected header keyword " + quoted(tok[0]) +
+             " (a PLY header holds format, element, property, comment, obj_info and end_header lines; free text "
+             "needs 'comment' in front)";
     }
   }
   if (format.empty()) return "the header has no 'format' line";

@@ -447,6 +447,77 @@ TEST(ImportGltf, FaceIndexPastTheVertexListIsAnError) {
   expect_error(import_mesh(all_bad), {all_bad.string(), "assimp"});
 }
 
+// assimp orders its meshes as the scene first refers to them, not as the file lists them, and
+// reads no mesh that no node uses (Khronos' 2CylinderEngine sample does both; it was refused with
+// "faces refer to vertices past" when the check paired them by position). Here the nodes use the
+// meshes in reverse order and a third mesh is used by no node.
+TEST(ImportGltf, MeshesUsedOutOfFileOrderMatchTheirOwnFaceCounts) {
+  // Four vertices; `lone` uses three of them, `pair` all four, `unused` three.
+  const float xyz[12] = {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 1.f, 1.f, 0.f};
+  auto gltf = [&](const std::vector<std::uint16_t>& pair_indices, bool with_unused) {
+    const std::vector<std::uint16_t> lone{0, 1, 2};
+    std::string buffer(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    for (const std::uint16_t i : lone) buffer.append(reinterpret_cast<const char*>(&i), 2);
+    for (const std::uint16_t i : pair_indices) buffer.append(reinterpret_cast<const char*>(&i), 2);
+    while (buffer.size() % 4 != 0) buffer.push_back('\0');
+    const std::string n = std::to_string(pair_indices.size());
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],)"
+           R"("nodes":[{"mesh":1},{"mesh":0,"translation":[0,0,5]}],)"
+           R"("meshes":[{"name":"lone","primitives":[{"attributes":{"POSITION":0},"indices":1}]},)"
+           R"({"name":"pair","primitives":[{"attributes":{"POSITION":3},"indices":2}]})" +
+           std::string(with_unused ? R"(,{"name":"unused","primitives":[{"attributes":{"POSITION":0},"indices":1}]})" : "") +
+           R"(],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},)"
+           R"({"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"},)"
+           R"({"bufferView":2,"componentType":5123,"count":)" + n + R"(,"type":"SCALAR"},)"
+           R"({"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],)"
+           R"("bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":6},)"
+           R"({"buffer":0,"byteOffset":54,"byteLength":)" + std::to_string(2 * pair_indices.size()) + R"(}],)"
+           R"("buffers":[{"byteLength":)" + std::to_string(buffer.size()) +
+           R"(,"uri":"data:application/octet-stream;base64,)" + base64(buffer) + R"("}]})";
+  };
+  const auto dir = scratch_dir();
+  // Two meshes, both used (in reverse order): the pairing by position refused this file.
+  const auto both = import_mesh(write_file(dir / "both.gltf", gltf({0, 1, 2, 2, 1, 3}, false)));
+  ASSERT_TRUE(both.ok()) << both.error().message;
+  EXPECT_EQ(both->triangle_count(), 3u);
+  const auto good = import_mesh(write_file(dir / "good.gltf", gltf({0, 1, 2, 2, 1, 3}, true)));
+  ASSERT_TRUE(good.ok()) << good.error().message;
+  ASSERT_EQ(good->parts.size(), 2u);
+  // Parts come in the scene's order: `pair` (node 0), then `lone` (node 1, raised by 5).
+  EXPECT_EQ(good->parts[0].name, "pair");
+  EXPECT_EQ(good->parts[0].triangles.size(), 2u);
+  EXPECT_EQ(good->parts[1].name, "lone");
+  ASSERT_EQ(good->parts[1].triangles.size(), 1u);
+  expect_vec(good->parts[1].triangles[0].p, 0, 0, 5000, 1e-9);
+  EXPECT_TRUE(good->warnings.empty());
+  // A bad index is still found, in whichever mesh, with a mesh no node uses in the file.
+  const auto bad = write_file(dir / "bad.gltf", gltf({0, 1, 2, 2, 1, 9}, true));
+  expect_error(import_mesh(bad), {bad.string(), "mesh 'pair' (primitive 0)", "1 of its 2 faces refer to vertices past its 4 vertices"});
+}
+
+// A TRIANGLES primitive whose count is not a multiple of 3 (the Khronos validator's
+// MESH_PRIMITIVE_INCOMPATIBLE_MODE warning, as in assimp's IncorrectVertexArrays sample): the
+// whole triangles are read and the user is told that the rest made none.
+TEST(ImportGltf, TrianglesCountNotAMultipleOfThreeIsAWarning) {
+  const float xyz[15] = {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 1.f, 1.f, 0.f, 2.f, 2.f, 0.f};
+  const std::string buffer(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+      R"("meshes":[{"name":"cut","primitives":[{"attributes":{"POSITION":0},"mode":4}]}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":5,"type":"VEC3","min":[0,0,0],"max":[2,2,0]}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":60}],)"
+      R"("buffers":[{"byteLength":60,"uri":"data:application/octet-stream;base64,)" + base64(buffer) + R"("}]})";
+  const auto file = write_file(scratch_dir() / "cut.gltf", json);
+  const auto model = import_mesh(file);
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  EXPECT_EQ(model->triangle_count(), 1u);
+  ASSERT_EQ(model->warnings.size(), 1u);
+  const std::string& w = model->warnings[0];
+  EXPECT_EQ(w.rfind(file.string() + ": mesh 'cut' (primitive 0)", 0), 0u) << w;
+  EXPECT_NE(w.find("5 indices (or vertices), not a multiple of 3: the last 2 make no triangle"), std::string::npos) << w;
+}
+
 TEST(ImportGltf, BinaryGlb) {
   const float xyz[9] = {0.f, 0.f, 0.f, 0.002f, 0.f, 0.f, 0.f, 0.004f, 0.f};
   const std::string bin(reinterpret_cast<const char*>(xyz), sizeof xyz);
