@@ -51,9 +51,11 @@ void run(const BvhOptions& o) {
   for (const std::string& file : o.files) {
     auto model = import_mesh(file, o.import.import_options());
     if (!model) throw std::runtime_error(model.error().message);
+    for (const std::string& w : model->warnings) std::cerr << "swept: warning: " << w << "\n";
     const TriangleSoup soup = model->merged();
     nlohmann::json entry{{"file", file}, {"triangles", soup.triangles.size()},
-                         {"degenerate_triangles", model->degenerate_triangles}, {"unit", o.import.unit}};
+                         {"degenerate_triangles", model->degenerate_triangles}, {"unit", o.import.unit},
+                         {"warnings", model->warnings}};
     nlohmann::json rows = nlohmann::json::array();
     std::map<SplitRule, BvhStats> base_stats;  // reference row for the ratios (the table's first fitter)
     for (Fitter f : fitters) {

@@ -1,6 +1,7 @@
 // `swept check`: certifies a path (ours or OMPL's `.path`, from swept or any other planner)
 // against a problem with the certificate the planner uses (swept::check_path).
 #include "commands.h"
+#include "output.h"
 
 #include "swept/plan/check.h"
 #include "swept/plan/planner.h"
@@ -108,6 +109,7 @@ void run(const CheckCliOptions& o) {
                        {"first_invalid", nullptr},
                        {"escape", nullptr},
                        {"segments", segments},
+                       {"warnings", scene->warnings},
                        {"distance_queries", r.distance_queries},
                        {"sweeps", r.sweeps}};
     if (r.first_bad_segment) {
@@ -122,10 +124,12 @@ void run(const CheckCliOptions& o) {
       doc["escape"] = {{"segments", r.escape_segments},
                        {"exempt_pairs", r.exempt_pairs},
                        {"min_clearance_other_pairs", r.escape_clearance}};
-    std::cout << doc.dump(2) << "\n";
+    std::cout << json_text(doc, 2) << "\n";
   } else {
     std::cout << std::setprecision(6) << "problem      " << o.problem << "\n"
-              << "path         " << o.path << ": " << path->poses.size() << " waypoints\n"
+              << "path         " << o.path << ": " << path->poses.size() << " waypoints\n";
+    for (const std::string& w : scene->warnings) std::cout << "warning      " << w << "\n";
+    std::cout
               << "result       " << r.message << "\n"
               << "clearance    min " << r.min_clearance << " " << problem->unit << " (required " << r.clearance
               << ") in segment " << r.min_segment << " at t = " << r.min_t << "\n";

@@ -34,6 +34,7 @@ void run(const MeshStatsOptions& o) {
   for (const std::string& file : o.files) {
     auto model = import_mesh(file, o.import.import_options());
     if (!model) throw std::runtime_error(model.error().message);
+    for (const std::string& w : model->warnings) std::cerr << "swept: warning: " << w << "\n";
     const scenes::MeshStats s = scenes::mesh_stats(model->merged().triangles);
     table.add({file, fmt_int(s.triangles), fmt_int(s.degenerate), fmt_sci(s.area_ratio), fmt_fixed(s.aspect_median, 2),
                fmt_fixed(100.0 * s.aspect_over_10, 1) + " %"});
@@ -48,7 +49,8 @@ void run(const MeshStatsOptions& o) {
                       {"area_ratio", s.area_ratio},
                       {"aspect_ratio_median", s.aspect_median},
                       {"aspect_ratio_max", s.aspect_max},
-                      {"aspect_ratio_over_10_fraction", s.aspect_over_10}});
+                      {"aspect_ratio_over_10_fraction", s.aspect_over_10},
+                      {"warnings", model->warnings}});
   }
   if (o.json) {
     std::cout << json_text(nlohmann::json{{"meshes", meshes}}, 2) << "\n";

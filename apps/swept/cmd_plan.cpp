@@ -1,6 +1,7 @@
 // `swept plan`: a certified, deterministic disassembly path for a problem file.
 #include "cli_options.h"
 #include "commands.h"
+#include "output.h"
 
 #include "swept/plan/planner.h"
 
@@ -107,6 +108,7 @@ void run(const PlanCliOptions& o) {
         {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}, {"sweep", r.queries.sweep}}},
         {"path_hash", hex(r.path_hash)},
         {"notes", problem->notes},
+        {"warnings", scene->warnings},
         {"seed", problem->seed},
         {"unit", problem->unit},
         {"fitter", std::string(to_string(problem->build.fitter))},
@@ -114,10 +116,11 @@ void run(const PlanCliOptions& o) {
         {"leaf_size", problem->build.leaf_size},
         {"nodes_checked", r.nodes_checked},
         {"edges_checked", r.edges_checked}};
-    std::cout << doc.dump(2) << "\n";
+    std::cout << json_text(doc, 2) << "\n";
   } else {
     std::cout << "problem      " << o.problem << "\n";
     for (const std::string& note : problem->notes) std::cout << "note         " << note << "\n";
+    for (const std::string& w : scene->warnings) std::cout << "warning      " << w << "\n";
     std::cout << "meshes       obstacles " << scene->obstacles.triangles.size() << " triangles, body "
               << scene->body.triangles.size() << " triangles (fitter " << to_string(problem->build.fitter) << ", split "
               << to_string(problem->build.split) << ", leaf size " << problem->build.leaf_size << ")\n"

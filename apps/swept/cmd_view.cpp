@@ -285,6 +285,7 @@ void run(const ViewOptions& o) {
   if (!problem) throw std::runtime_error(problem.error().message);
   auto scene = load_scene(*problem, problem->build);
   if (!scene) throw std::runtime_error(scene.error().message);
+  for (const std::string& w : scene->warnings) std::cerr << "swept: warning: " << w << "\n";
   auto path = read_path(o.path);
   if (!path) throw std::runtime_error(path.error().message);
   const auto t0 = std::chrono::steady_clock::now();

@@ -238,6 +238,8 @@ different clearances or time limits: swept.plan(problem, scene=scene).)doc")
       .def_property_readonly("radius", [](const PyScene& s) { return s.scene->radius; })
       .def_property_readonly("obstacle_triangles", [](const PyScene& s) { return s.scene->obstacles.triangles.size(); })
       .def_property_readonly("body_triangles", [](const PyScene& s) { return s.scene->body.triangles.size(); })
+      .def_property_readonly("warnings", [](const PyScene& s) { return s.scene->warnings; },
+                             "What reading the meshes left out or noticed, each naming its file (as `swept plan` prints them)")
       .def_property_readonly("load_ms", [](const PyScene& s) { return s.scene->load_ms; })
       .def_property_readonly("build_ms", [](const PyScene& s) { return s.scene->build_ms; });
 

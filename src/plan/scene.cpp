@@ -14,6 +14,7 @@ namespace swept {
 Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) {
   using Clock = std::chrono::steady_clock;
   PlanScene scene;
+  std::vector<std::string> warnings;
   const auto t0 = Clock::now();
   auto gather = [&](const std::vector<MeshRef>& refs, TriangleSoup& out) -> std::optional<Error> {
     for (const MeshRef& ref : refs) {
@@ -24,6 +25,7 @@ Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) 
       io.max_triangles = problem.max_triangles;
       auto model = import_mesh(ref.file, io);
       if (!model) return model.error();
+      for (std::string& w : model->warnings) warnings.push_back(std::move(w));
       TriangleSoup soup = model->merged();
       if (soup.triangles.empty()) return Error{ref.file.string() + ": the mesh has no triangles"};
       for (const Triangle& t : soup.triangles)
@@ -38,6 +40,7 @@ Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) 
   const auto t1 = Clock::now();
   auto made = make_scene(std::move(scene.obstacles), std::move(scene.body), config, problem.reference_point);
   if (!made) return made.error();
+  made->warnings = std::move(warnings);
   made->load_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   return made;
 }

@@ -26,6 +26,30 @@ int run_cli(const std::string& args, std::string& out) {
   return r.code;
 }
 
+// What reading a file leaves out is said: `swept bvh` and `swept mesh-stats` print each import
+// warning on stderr ("swept: warning: ...") and list them in --json. An OBJ whose first object
+// holds points and a line only: that part is left out, the square is read.
+TEST(BvhCli, ImportWarningsOnStderrAndInJson) {
+  const fs::path dir = fs::temp_directory_path() / ("swept_bvh_warn_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path obj = dir / "marked.obj";
+  std::ofstream(obj) << "o marks\nv 0 0 0\nv 1 0 0\np 1\nl 1 2\no square\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 3 4 5 6\n";
+  const std::string warning = obj.string() + ": part 'marks' has no triangles";
+  for (const std::string command : {"bvh ", "mesh-stats "}) {
+    const test::CliRun text = test::run_cli(command + obj.string(), /*with_stderr=*/true);
+    ASSERT_EQ(text.code, 0) << command << text.out;
+    EXPECT_NE(text.out.find("swept: warning: " + warning), std::string::npos) << command << text.out;
+    const test::CliRun json = test::run_cli(command + "--json " + obj.string(), /*with_stderr=*/false);
+    ASSERT_EQ(json.code, 0) << command << json.out;
+    const auto doc = nlohmann::json::parse(json.out);
+    ASSERT_EQ(doc.at("meshes").size(), 1u) << command;
+    EXPECT_EQ(doc["meshes"][0].at("triangles").get<std::size_t>(), 2u) << command;
+    ASSERT_EQ(doc["meshes"][0].at("warnings").size(), 1u) << command;
+    EXPECT_EQ(doc["meshes"][0]["warnings"][0].get<std::string>().rfind(warning, 0), 0u) << command;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(BvhCli, JsonForEveryFitterAndSplit) {
   const fs::path dir = fs::temp_directory_path() / ("swept_bvh_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);

@@ -81,6 +81,7 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   for (const char* key : {"distance", "proximity", "sweep"}) EXPECT_TRUE(doc["queries"].contains(key)) << key;
   EXPECT_TRUE(doc["solved"].get<bool>());
   EXPECT_TRUE(doc["notes"].is_array() && doc["notes"].empty());  // a TOML asks nothing swept ignores
+  EXPECT_TRUE(doc["warnings"].is_array() && doc["warnings"].empty());  // its meshes lose nothing
   EXPECT_GE(doc["min_clearance"].get<double>(), 0.1);
   auto path = read_path(dir / "path.json");
   ASSERT_TRUE(path) << path.error().message;
@@ -92,6 +93,37 @@ TEST_F(PlanCli, SolvesWritesPathsAndJson) {
   ASSERT_TRUE(ompl);
   EXPECT_EQ(ompl->poses.size(), path->poses.size());
   check_written_path(p, dir / "path.path", figures_of(doc));
+}
+
+// What reading a mesh leaves out reaches the user: the certificate covers the triangles read, so
+// `swept plan` and `swept check` print each import warning (and --json lists them). Here an OBJ
+// obstacle holds a part of points and lines only, next to a wall, which is left out.
+TEST_F(PlanCli, MeshWarningsArePrintedAndListed) {
+  const fs::path d = dir / "warned";
+  fs::create_directories(d);
+  std::ofstream(d / "obstacles.obj") << "o marks\nv 0 0 0\nv 1 0 0\np 1\nl 1 2\n"
+                                        "o wall\nv 10 -50 -50\nv 10 50 -50\nv 10 50 50\nv 10 -50 50\nf 3 4 5 6\n";
+  std::ofstream(d / "body.stl") << "solid b\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\n"
+                                   "vertex 0 1 0\nendloop\nendfacet\nendsolid b\n";
+  std::ofstream(d / "problem.toml") << "unit = \"mm\"\n[[obstacle]]\nfile = \"obstacles.obj\"\n[[body]]\nfile = \"body.stl\"\n"
+                                       "[start]\ntranslation = [0, 0, 0]\n[goal]\ntranslation = [-20, 0, 0]\n"
+                                       "[bounds]\nmin = [-50, -50, -50]\nmax = [50, 50, 50]\n";
+  const std::string p = (d / "problem.toml").string();
+  const std::string warning = (d / "obstacles.obj").string() + ": part 'marks' has no triangles";
+  const CliRun text = run(p + " -o " + (d / "path.json").string());
+  ASSERT_EQ(text.code, 0) << text.out;
+  EXPECT_NE(text.out.find("\nwarning      " + warning), std::string::npos) << text.out;
+  const CliRun json = run(p + " --json -q");
+  ASSERT_EQ(json.code, 0) << json.out;
+  const auto doc = nlohmann::json::parse(json.out);
+  ASSERT_EQ(doc.at("warnings").size(), 1u);
+  EXPECT_EQ(doc["warnings"][0].get<std::string>().rfind(warning, 0), 0u) << doc["warnings"];
+  const CliRun check = test::run_cli("check " + p + " " + (d / "path.json").string(), false);
+  ASSERT_EQ(check.code, 0) << check.out;
+  EXPECT_NE(check.out.find("\nwarning      " + warning), std::string::npos) << check.out;
+  const CliRun check_json = test::run_cli("check " + p + " " + (d / "path.json").string() + " --json", false);
+  ASSERT_EQ(check_json.code, 0) << check_json.out;
+  EXPECT_EQ(nlohmann::json::parse(check_json.out).at("warnings").size(), 1u);
 }
 
 TEST_F(PlanCli, TheCheckOfWrittenPathsCanFail) {

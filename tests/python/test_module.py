@@ -318,6 +318,26 @@ def test_problem_notes_name_what_a_cfg_asks_of_ompl(tmp_path, swept_cli):
     assert cli["notes"] == notes
 
 
+def test_scene_warnings_name_what_reading_left_out(tmp_path, swept_cli):
+    # An OBJ obstacle whose first object holds a point and a line only: that part is left out of
+    # the scene, and Scene.warnings says so, as `swept plan --json` lists it.
+    (tmp_path / "obstacles.obj").write_text("o marks\nv 0 0 0\nv 1 0 0\np 1\nl 1 2\n"
+                                            "o wall\nv 10 -50 -50\nv 10 50 -50\nv 10 50 50\nv 10 -50 50\nf 3 4 5 6\n")
+    (tmp_path / "body.stl").write_text("solid b\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\n"
+                                       "vertex 0 1 0\nendloop\nendfacet\nendsolid b\n")
+    problem_file = tmp_path / "problem.toml"
+    problem_file.write_text('unit = "mm"\n[[obstacle]]\nfile = "obstacles.obj"\n[[body]]\nfile = "body.stl"\n'
+                            "[start]\ntranslation = [0, 0, 0]\n[goal]\ntranslation = [-20, 0, 0]\n"
+                            "[bounds]\nmin = [-50, -50, -50]\nmax = [50, 50, 50]\n")
+    scene = swept.Scene(swept.Problem.load(str(problem_file)))
+    assert len(scene.warnings) == 1
+    assert scene.warnings[0].startswith(str(tmp_path / "obstacles.obj") + ": part 'marks' has no triangles")
+    assert scene.obstacle_triangles == 2
+    cli = json.loads(subprocess.run([swept_cli, "plan", str(problem_file), "--json", "-q"],
+                                    check=True, capture_output=True, text=True).stdout)
+    assert cli["warnings"] == scene.warnings
+
+
 # ---- errors: swept.Error with the command line's message --------------------------------------------
 def cli_error(cli, *args):
     p = subprocess.run([cli, *args], capture_output=True, text=True)

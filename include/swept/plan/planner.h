@@ -36,6 +36,10 @@ struct PlanScene {
   Aabb obstacle_box;              ///< world bounding box of the obstacles
   std::vector<SurfacePart> obstacle_parts;  ///< connected parts of the obstacles, closed or not
   std::vector<SurfacePart> body_parts;      ///< connected parts of the body (body frame)
+  /// What reading the meshes left out or noticed (ImportedModel::warnings: CAD faces that did not
+  /// tessellate, parts without triangles, ...), each naming its file: the certificate covers the
+  /// triangles read, so a user must see them.
+  std::vector<std::string> warnings;
   double load_ms = 0.0;           ///< reading and tessellating the meshes
   double build_ms = 0.0;          ///< building both trees
 };
