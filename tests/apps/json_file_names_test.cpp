@@ -82,6 +82,30 @@ TEST(JsonFileNames, ViewOfAProblemWhoseNameIsNotUtf8IsWrittenWhole) {
   EXPECT_EQ(files, 5);
 }
 
+// `swept plan --json` and `swept check --json` list the import warnings, which name their mesh
+// file: in a folder whose name is not UTF-8 the documents are still whole, valid JSON.
+TEST(JsonFileNames, PlanAndCheckWarningsNamingAFolderThatIsNotUtf8) {
+  const fs::path dir = fresh_dir("json_file_names_plan") / "d\xff";
+  fs::create_directories(dir);
+  std::ofstream(dir / "marked.obj") << "o marks\nv 0 0 0\nv 1 0 0\np 1\nl 1 2\n"
+                                       "o wall\nv 10 -50 -50\nv 10 50 -50\nv 10 50 50\nv 10 -50 50\nf 3 4 5 6\n";
+  ASSERT_TRUE(write_stl_binary(dir / "cube.stl", {"cube", box_triangles({-1, -1, -1}, {1, 1, 1})}));
+  std::ofstream(dir / "p.toml") << "unit = \"mm\"\n[[obstacle]]\nfile = \"marked.obj\"\n[[body]]\nfile = \"cube.stl\"\n"
+                                   "[start]\ntranslation = [0, 0, 0]\n[goal]\ntranslation = [-20, 0, 0]\n"
+                                   "[bounds]\nmin = [-50, -50, -50]\nmax = [50, 50, 50]\n";
+  const CliRun plan = run_cli("plan --json -q " + quoted(dir / "p.toml") + " -o " + quoted(dir / "path.json"), false);
+  ASSERT_EQ(plan.code, 0) << plan.out;
+  const CliRun check = run_cli("check --json " + quoted(dir / "p.toml") + " " + quoted(dir / "path.json"), false);
+  ASSERT_EQ(check.code, 0) << check.out;
+  for (const CliRun* r : {&plan, &check}) {
+    const nlohmann::json doc = nlohmann::json::parse(r->out, nullptr, false);
+    ASSERT_FALSE(doc.is_discarded()) << "invalid JSON:\n" << r->out;
+    ASSERT_EQ(doc.at("warnings").size(), 1u) << r->out;
+    EXPECT_NE(doc["warnings"][0].get<std::string>().find("d" + kReplacement + "/marked.obj: part 'marks'"),
+              std::string::npos) << r->out;
+  }
+}
+
 #endif
 
 }  // namespace
