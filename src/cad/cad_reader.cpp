@@ -23,6 +23,7 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <Standard_Failure.hxx>
@@ -176,10 +177,19 @@ std::string status_text(IFSelect_ReturnStatus s) {
 const XSControl_Reader& base_reader(const STEPCAFControl_Reader& r) { return r.Reader(); }
 const XSControl_Reader& base_reader(const IGESCAFControl_Reader& r) { return r; }
 
+// OCCT's default messenger prints to std::cout: the IGES reader's "Total number of loaded
+// entities", in colour, landed in the middle of `swept bvh --json`'s document. Its stream
+// printers are removed, once; the failures a read sends still reach FailCollector.
+void silence_occt_output() {
+  static std::once_flag once;
+  std::call_once(once, [] { Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream)); });
+}
+
 template <class Reader>
 Result<bool> read_xcaf(const ReadContext& ctx, const char* format, Handle(TDocStd_Document)& doc,
                        std::vector<Instance>& instances) {
   doc = new TDocStd_Document("XmlXCAF");
+  silence_occt_output();
   std::lock_guard<std::mutex> lock(xstep_mutex());
   Reader reader;
   reader.SetNameMode(true);

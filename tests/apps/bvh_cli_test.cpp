@@ -50,6 +50,20 @@ TEST(BvhCli, ImportWarningsOnStderrAndInJson) {
   fs::remove_all(dir);
 }
 
+// `--json` prints one document and nothing else, whichever reader ran: OpenCASCADE's IGES
+// reader wrote "Total number of loaded entities" (in colour) to stdout, before the document.
+TEST(BvhCli, JsonOfCadFilesIsTheWholeOutput) {
+  for (const char* name : {"box.igs", "box.brep", "box_mm.step", "assembly.step"}) {
+    const fs::path file = fs::path(SWEPT_SOURCE_DIR) / "tests" / "data" / "io" / name;
+    for (const std::string command : {"bvh --json ", "mesh-stats --json "}) {
+      const test::CliRun r = test::run_cli(command + file.string(), /*with_stderr=*/false);
+      ASSERT_EQ(r.code, 0) << command << name << "\n" << r.out;
+      EXPECT_EQ(r.out.rfind("{", 0), 0u) << command << name << " printed before its document:\n" << r.out;
+      EXPECT_FALSE(nlohmann::json::parse(r.out, nullptr, false).is_discarded()) << command << name << "\n" << r.out;
+    }
+  }
+}
+
 TEST(BvhCli, JsonForEveryFitterAndSplit) {
   const fs::path dir = fs::temp_directory_path() / ("swept_bvh_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
