@@ -330,6 +330,15 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
       }
       if (shape.IsNull()) return file_error(ctx.display, "not a readable OCCT .brep file");
       brep_instances(shape, stem, instances);
+      if (instances.empty()) {
+        // A wireframe (OCCT's sample asahi.brep: edges and vertices only): say what it holds.
+        TopTools_IndexedMapOfShape edges, vertices;
+        TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+        TopExp::MapShapes(shape, TopAbs_VERTEX, vertices);
+        auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
+        return file_error(ctx.display, "holds no faces to mesh, only " + count(edges.Extent(), "edge", "edges") + " and " +
+                                           count(vertices.Extent(), "vertex", "vertices") + " (a wireframe)");
+      }
     } else {
       const bool step = ext == ".step" || ext == ".stp";
       if (!step) {

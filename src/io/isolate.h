@@ -12,13 +12,30 @@
 
 namespace swept::io_detail {
 
-/// Runs `work` in a forked child and returns the bytes it produced, or its Error. The child is
-/// killed after `timeout_s` seconds. Errors name `display` and `reader`: "the assimp reader
-/// crashed (signal 11) on this file, which is probably malformed", "... did not finish within
-/// 600 s". The child must not use oneTBB (its scheduler does not survive fork): readers run
+/// Limits of a reader's child process.
+struct ChildLimits {
+  double timeout_s = 600.0;       ///< killed after this long
+  std::size_t memory_bytes = 0;   ///< address space past what it inherits (RLIMIT_AS); 0: none
+  /// Appended to the messages of a child stopped by either limit (what the user can change).
+  std::string advice;
+};
+
+/// Runs `work` in a forked child and returns the bytes it produced, or its Error. Errors name
+/// `display` and `reader`: "the assimp reader crashed (signal 11) on this file, which is probably
+/// malformed", "... did not finish within 600 s", "... ran out of memory: it used 2.1 GB of its
+/// 2 GB limit". The child must not use oneTBB (its scheduler does not survive fork): readers run
 /// single-threaded there. Not reentrant across threads that fork at the same time.
-Result<std::string> run_isolated(const std::string& display, const std::string& reader, double timeout_s,
+Result<std::string> run_isolated(const std::string& display, const std::string& reader, const ChildLimits& limits,
                                  const std::function<Result<std::string>()>& work);
+
+/// `ImportOptions::reader_memory` resolved: itself; when 0, SWEPT_READER_MEMORY (gigabytes) if
+/// set, else three quarters of the physical memory. An Error for a SWEPT_READER_MEMORY that is
+/// not a positive number.
+Result<std::size_t> reader_memory_bytes(std::size_t option);
+
+/// Whether the child's memory limit is applied in this build (not under AddressSanitizer, whose
+/// shadow memory is address space).
+bool child_memory_limit_applies();
 
 /// Little helpers to pack what a reader returns into bytes and back.
 class ByteWriter {

@@ -159,7 +159,12 @@ Result<bool> read_isolated(io_detail::ReadContext& ctx, Reader reader, std::vect
   // read_cad says why, with no child.
   if (reader == Reader::cad && io_detail::cad_module().entry == nullptr) return io_detail::read_cad(ctx, parts);
   const char* name = reader == Reader::assimp ? "assimp" : "OpenCASCADE";
-  auto bytes = io_detail::run_isolated(ctx.display, name, ctx.options->reader_timeout, [&]() -> Result<std::string> {
+  const Result<std::size_t> memory = io_detail::reader_memory_bytes(ctx.options->reader_memory);
+  if (!memory) return memory.error();
+  // A CAD file's tessellation grows with a finer deflection, whatever the file.
+  const io_detail::ChildLimits limits{ctx.options->reader_timeout, *memory,
+                                      reader == Reader::cad ? "; a larger deflection makes fewer triangles" : ""};
+  auto bytes = io_detail::run_isolated(ctx.display, name, limits, [&]() -> Result<std::string> {
     ctx.single_threaded = true;  // no oneTBB after fork
     std::vector<TriangleSoup> out;
     Result<bool> r = read_here(out);
@@ -277,7 +282,10 @@ Result<OmplAppVertices> ompl_app_vertices(const std::filesystem::path& file, con
     // assimp, isolated like every third-party read (isolate.h).
     if (!options.isolate_readers) return io_detail::ompl_app_vertices_with_assimp(*ctx);
     const io_detail::ReadContext& c = *ctx;
-    auto bytes = io_detail::run_isolated(c.display, "assimp", options.reader_timeout, [&c]() -> Result<std::string> {
+    const Result<std::size_t> memory = io_detail::reader_memory_bytes(options.reader_memory);
+    if (!memory) return memory.error();
+    const io_detail::ChildLimits limits{options.reader_timeout, *memory, {}};
+    auto bytes = io_detail::run_isolated(c.display, "assimp", limits, [&c]() -> Result<std::string> {
       Result<OmplAppVertices> v = io_detail::ompl_app_vertices_with_assimp(c);
       if (!v) return v.error();
       io_detail::ByteWriter w;

@@ -48,6 +48,13 @@ struct ImportOptions {
   bool isolate_readers = true;
   /// Seconds a reader may take in its child process before it is stopped (an Error).
   double reader_timeout = 600.0;
+  /// Bytes a reader may allocate in its child process (its address space past what it inherits,
+  /// RLIMIT_AS); past it, or within a tenth of it (where BRepMesh catches failed allocations and
+  /// leaves faces out), the read fails with an Error saying so, instead of the machine running out
+  /// of memory (BRepMesh took 12 GB in two minutes on OCCT's sample terrain.brep at deflection
+  /// 0.1 mm). 0: the environment's SWEPT_READER_MEMORY (gigabytes) if set, else three quarters of
+  /// the physical memory. Not applied in AddressSanitizer builds.
+  std::size_t reader_memory = 0;
 };
 
 /// What an import produced.
