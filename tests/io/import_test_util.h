@@ -46,4 +46,36 @@ void expect_error(const Result<T>& result, std::initializer_list<std::string> pa
         << "message '" << result.error().message << "' lacks '" << p << "'";
 }
 
+/// The readers' memory limit is not applied under AddressSanitizer (src/io/isolate.h).
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kAddressSanitizer = true;
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+
+/// Reads `file` as a user would: it must give finite triangles, with warnings that start with the
+/// file, or fail with one line that starts with the file. Returns whether it read.
+inline bool reads_or_fails_naming_the_file(const std::filesystem::path& file, const ImportOptions& options = {}) {
+  SCOPED_TRACE(file.string());
+  const auto model = import_mesh(file, options);
+  if (!model.ok()) {
+    const std::string& m = model.error().message;
+    EXPECT_EQ(m.rfind(file.string() + ": ", 0), 0u) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    return false;
+  }
+  EXPECT_GT(model->triangle_count(), 0u);
+  for (const TriangleSoup& part : model->parts)
+    for (const Triangle& t : part.triangles)
+      for (int v = 0; v < 3; ++v) EXPECT_TRUE(t[v].allFinite()) << "part " << part.name;
+  for (const std::string& w : model->warnings) EXPECT_EQ(w.rfind(file.string() + ": ", 0), 0u) << w;
+  return true;
+}
+
 }  // namespace swept::test

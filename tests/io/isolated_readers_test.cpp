@@ -3,6 +3,8 @@
 // file, and a good file reads the same isolated or not.
 #include "swept/io/mesh_io.h"
 
+#include "import_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -14,19 +16,6 @@ namespace swept {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The readers' memory limit is not applied under AddressSanitizer (src/io/isolate.h).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 class IsolatedReaders : public ::testing::Test {
  protected:
@@ -80,7 +69,7 @@ TEST_F(IsolatedReaders, AssimpAssertsAndHangsBecomeErrors) {
 // at 0.01 mm in 150 MB, with only a warning): that is the same Error. OCCT's hammer at 0.1 mm
 // peaks near 430 MB; the screw fits in 64 MB.
 TEST_F(IsolatedReaders, AReaderPastItsMemoryLimitIsStoppedWithAnErrorSayingSo) {
-  if (kAddressSanitizer) GTEST_SKIP() << "no memory limit under AddressSanitizer (its shadow memory is address space)";
+  if (test::kAddressSanitizer) GTEST_SKIP() << "no memory limit under AddressSanitizer (its shadow memory is address space)";
   ImportOptions tight;
   tight.reader_memory = 64u << 20;
   const fs::path hammer = fs::path(SWEPT_SHARED_DATA) / "occt" / "hammer.brep";

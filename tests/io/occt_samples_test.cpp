@@ -15,19 +15,6 @@ namespace fs = std::filesystem;
 
 const fs::path kData = "/usr/share/opencascade/data";
 
-// The readers' memory limit is not applied under AddressSanitizer (src/io/isolate.h).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
 #define SKIP_WITHOUT_SAMPLES()                                                                        \
   if (!fs::is_directory(kData))                                                                       \
   GTEST_SKIP() << kData << " is missing: install Debian's occt-misc (scripts/setup.sh does)"
@@ -54,19 +41,7 @@ TEST(OcctSamples, EverySampleReadsOrFailsWithOneLineNamingTheFile) {
   for (const fs::path& file : files) {
     // Unbounded under AddressSanitizer, the terrain alone would take minutes and gigabytes.
     if (kAddressSanitizer && file.filename() == "terrain.brep") continue;
-    SCOPED_TRACE(file.string());
-    const auto model = import_mesh(file, options);
-    if (!model.ok()) {
-      const std::string& m = model.error().message;
-      EXPECT_EQ(m.rfind(file.string() + ": ", 0), 0u) << m;
-      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-      continue;
-    }
-    ++read;
-    EXPECT_GT(model->triangle_count(), 0u);
-    for (const TriangleSoup& part : model->parts)
-      for (const Triangle& t : part.triangles)
-        for (int v = 0; v < 3; ++v) ASSERT_TRUE(t[v].allFinite()) << "part " << part.name;
+    read += reads_or_fails_naming_the_file(file, options);
   }
   EXPECT_GT(read, files.size() - 5);
 }
