@@ -5,10 +5,10 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
-#include <cstdio>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -120,8 +120,8 @@ Result<std::string> run_isolated(const std::string& display, const std::string& 
     // handlers, no leak report for what the reader left behind.
     ::close(fds[0]);
     if (limit_memory) {
-      // Past the limit, allocations fail (std::bad_alloc, OCCT's Standard_OutOfMemory, or a crash
-      // of code that does not check): the parent tells them apart by the memory the child used.
+      // Past the limit, allocations fail: std::bad_alloc, OCCT's Standard_OutOfMemory, a reader
+      // that catches them and goes on without, or a crash of code that does not check.
       const rlimit lim{start_size + limits.memory_bytes, start_size + limits.memory_bytes};
       ::setrlimit(RLIMIT_AS, &lim);
     }
@@ -130,11 +130,6 @@ Result<std::string> run_isolated(const std::string& display, const std::string& 
       Result<std::string> r = work();
       out.push_back(r ? '1' : '0');
       out.append(r ? *r : r.error().message);
-      // Within a tenth of the limit, allocations may have failed where the reader caught them:
-      // BRepMesh then leaves the face out, a quieter loss. The limit is the answer, read or not.
-      const std::size_t peak = limit_memory ? peak_address_space() : 0;
-      if (peak > start_size && static_cast<double>(peak - start_size) > 0.9 * static_cast<double>(limits.memory_bytes))
-        out = "0" + out_of_memory(display, reader, static_cast<double>(peak - start_size), limits);
     } catch (const std::exception& e) {
       out = "0";
       out.append(display).append(": the ").append(reader).append(" reader failed: ").append(e.what());
@@ -142,6 +137,12 @@ Result<std::string> run_isolated(const std::string& display, const std::string& 
       out = "0";
       out.append(display).append(": the ").append(reader).append(" reader failed with an unknown exception");
     }
+    // Within a tenth of the limit, allocations may have failed where the reader caught them
+    // (BRepMesh then leaves the face out, a quieter loss): whatever came of the read, the limit
+    // is the answer. (A child that crashed writes nothing: the parent judges by its memory.)
+    const std::size_t peak = limit_memory ? peak_address_space() : 0;
+    if (peak > start_size && static_cast<double>(peak - start_size) > 0.9 * static_cast<double>(limits.memory_bytes))
+      out = "0" + out_of_memory(display, reader, static_cast<double>(peak - start_size), limits);
     const bool ok = write_all(fds[1], out.data(), out.size());
     ::_exit(ok ? 0 : 3);
   }
@@ -175,11 +176,10 @@ Result<std::string> run_isolated(const std::string& display, const std::string& 
     return Error{display + ": the " + reader + " reader did not finish within " + std::to_string(static_cast<long>(timeout_s)) +
                  " s on this file (stopped); it is probably malformed" + limits.advice};
   }
-  const bool failed = WIFSIGNALED(status) || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty() ||
-                      bytes[0] != '1';
-  // Failed near its memory limit: the limit is the reason (whatever the failure looked like).
+  // Ended without a word (a crash, or killed) after growing near its memory limit: the limit is
+  // the reason, whatever the end looked like.
   const double used = 1024.0 * static_cast<double>(usage.ru_maxrss) - static_cast<double>(start_resident);
-  if (failed && limit_memory && bytes.empty() && used > 0.75 * static_cast<double>(limits.memory_bytes))
+  if (limit_memory && bytes.empty() && used > 0.75 * static_cast<double>(limits.memory_bytes))
     return Error{out_of_memory(display, reader, used, limits)};
   if (WIFSIGNALED(status)) {
     return Error{display + ": the " + reader + " reader crashed (signal " + std::to_string(WTERMSIG(status)) +
