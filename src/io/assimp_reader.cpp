@@ -284,6 +284,10 @@ Result<OmplAppVertices> ompl_app_vertices_with_assimp(const ReadContext& ctx) {
     Aabb box;
     gather_vertices(*scene, *scene->mRootNode, Affine::Identity(), sum, count, box);
     if (count == 0) return file_error(ctx.display, "contains no vertices");
+    // Never a NaN centre (assimp's BoxWithInfinites sample gave one).
+    if (!box.min.allFinite() || !box.max.allFinite() || sum.hasNaN())
+      return file_error(ctx.display, "a vertex has a non-finite coordinate");
+    if (!sum.allFinite()) return file_error(ctx.display, "vertex coordinates too large to average (their sum overflows)");
     // file_to_output is a positive scale: the box's corners scale with it.
     return OmplAppVertices{Vec3(ctx.file_to_output * sum / static_cast<double>(count)),
                            Aabb{ctx.file_to_output * box.min, ctx.file_to_output * box.max}};
