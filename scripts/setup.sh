@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages swept needs (as root via apt-get; otherwise prints the command;
-# the tests' and benchmarks' too: GoogleTest, Google Benchmark, FCL, OMPL, assimp's and OCCT's samples),
+# the tests' and benchmarks' too: GoogleTest, Google Benchmark, FCL, OMPL, and the sample files of
+# assimp, OpenCASCADE and FreeCAD that the tests read),
 # the viewer's npm packages, and configures + builds the release preset; then installs the Python
 # module for /usr/bin/python3 (as root; otherwise prints the PYTHONPATH line to use).
 #   bash scripts/setup.sh            # packages + release build
@@ -14,7 +15,7 @@ packages=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  assimp-testmodels occt-misc
+  assimp-testmodels occt-misc freecad-common
   libfcl-dev libompl-dev zlib1g-dev
   chromium
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-tqdm

@@ -10,12 +10,14 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepGProp.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESCAFControl_Reader.hxx>
+#include <GProp_GProps.hxx>
 #include <IMeshTools_Parameters.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
@@ -397,7 +399,20 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
     BRepMesh_IncrementalMesh mesher(prototypes, params);
     if (!mesher.IsDone()) return file_error(ctx.display, "BRepMesh failed to tessellate the shapes");
 
-    std::size_t untriangulated = 0, total = 0;
+    // A face BRepMesh left without triangles: of no area (a degenerate face the file holds, as
+    // FreeCAD's SOD_323.stp has two: nothing is lost), or a real failure (a hole in the part).
+    // Judged once per face of a part, by its area against the deflection's square.
+    std::map<const void*, bool> empty_face;
+    auto has_no_area = [&](const TopoDS_Face& face) {
+      auto [it, added] = empty_face.emplace(face.TShape().get(), false);
+      if (added) {
+        GProp_GProps props;
+        BRepGProp::SurfaceProperties(face, props);
+        it->second = !(std::abs(props.Mass()) > 1e-6 * params.Deflection * params.Deflection);
+      }
+      return it->second;
+    };
+    std::size_t untriangulated = 0, empty = 0, total = 0;
     for (Instance& inst : instances) {
       TriangleSoup soup;
       soup.name = inst.name.empty() ? stem : inst.name;
@@ -406,7 +421,7 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
         TopLoc_Location loc;
         const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
         if (tri.IsNull()) {
-          ++untriangulated;
+          ++(has_no_area(face) ? empty : untriangulated);
           continue;
         }
         // The estimate is not a bound: the triangles kept are counted too.
@@ -468,6 +483,9 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
     if (untriangulated > 0)
       ctx.warnings->push_back(ctx.display + ": " + std::to_string(untriangulated) +
                               " face instance(s) could not be tessellated by BRepMesh and are left out");
+    if (empty > 0)
+      ctx.warnings->push_back(ctx.display + ": " + std::to_string(empty) +
+                              " face instance(s) of no area (degenerate in the file) have no triangles; nothing is lost");
   } catch (const Standard_Failure& e) {
     return file_error(ctx.display, std::string("OpenCASCADE: ") + e.GetMessageString());
   } catch (const std::exception& e) {
