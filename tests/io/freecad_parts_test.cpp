@@ -1,5 +1,5 @@
 // Files nobody here wrote: FreeCAD's IDF library of electronic parts (Debian's freecad-common,
-// installed by scripts/setup.sh), 27 STEP and 4 IGES files written by several exporters (OCCT's
+// installed by scripts/setup.sh), 28 STEP and 4 IGES files written by several exporters (OCCT's
 // STEP translator 6.3, others), and the --json of each.
 #include "import_test_util.h"
 

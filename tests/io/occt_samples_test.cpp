@@ -1,5 +1,5 @@
 // Files nobody here wrote: OpenCASCADE's own sample data, as Debian ships it (occt-misc, installed
-// by scripts/setup.sh): STEP, IGES, 36 .brep shapes (solids, shells, loose faces, wireframes, a
+// by scripts/setup.sh): STEP, IGES, 37 .brep shapes (solids, shells, loose faces, wireframes, a
 // B-spline terrain) and STL meshes.
 #include "import_test_util.h"
 
