@@ -108,11 +108,10 @@ TEST(ImportCad, StepAssemblyPlacementsAndNames) {
 }
 
 TEST(ImportCad, DeflectionControlsTheTessellation) {
-  // A box has planar faces only, so use a curved shared part when present, else skip.
-  const auto data = shared_data();
-  if (!data) GTEST_SKIP() << "shared CAD data not found";
-  const auto file = *data / "occt" / "mal_tige.brep";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  // A box has planar faces only, so use a curved OCCT sample when present, else skip.
+  const auto sample = occt_sample("mal_tige.brep");
+  if (!sample) GTEST_SKIP() << "OCCT's mal_tige.brep not found (shared data or occt-misc)";
+  const auto file = *sample;
   const auto coarse = import_mesh(file, cad_options("mm", 0.5));
   const auto fine = import_mesh(file, cad_options("mm", 0.02, 0.2));
   ASSERT_TRUE(coarse.ok()) << coarse.error().message;
@@ -201,10 +200,9 @@ TEST(ImportCad, SharedInchStepMatchesMillimetres) {
 }
 
 TEST(ImportCad, ParallelTessellationIsDeterministic) {
-  const auto data = shared_data();
-  if (!data) GTEST_SKIP() << "shared CAD data not found";
-  const auto file = *data / "occt" / "Motor-c.brep";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  const auto sample = occt_sample("Motor-c.brep");
+  if (!sample) GTEST_SKIP() << "OCCT's Motor-c.brep not found (shared data or occt-misc)";
+  const auto file = *sample;
   const auto a = import_mesh(file, cad_options("mm", 0.1));
   const auto b = import_mesh(file, cad_options("mm", 0.1));
   ASSERT_TRUE(a.ok()) << a.error().message;

@@ -120,10 +120,10 @@ TEST(TriangleBudget, TinyDeflectionOnASphereIsRefusedBeforeMeshing) {
 // The reported case: an 88 KB STEP screw at 1e-6 mm grew past 7 GB in 90 s (BRepMesh peaks near
 // 1 KB per triangle); by default it is refused before meshing.
 TEST(TriangleBudget, ScrewStepAtOneNanometreIsRefusedByDefault) {
-  const auto data = shared_data();
-  if (!data || !fs::exists(*data / "occt" / "screw.step")) GTEST_SKIP() << "shared CAD data (occt/screw.step) not found";
+  const auto screw = occt_sample("screw.step");
+  if (!screw) GTEST_SKIP() << "OCCT's screw.step not found (shared data or occt-misc)";
   const auto t0 = std::chrono::steady_clock::now();
-  const auto r = import_mesh(*data / "occt" / "screw.step", cad(1e-6));
+  const auto r = import_mesh(*screw, cad(1e-6));
   EXPECT_LT(seconds_since(t0), 10.0);
   expect_error(r, {"screw.step: tessellating at deflection 1e-06 mm would make about", "max_triangles"});
 }

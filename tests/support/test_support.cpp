@@ -33,6 +33,15 @@ std::optional<std::filesystem::path> shared_data() {
   return std::nullopt;
 }
 
+std::optional<std::filesystem::path> occt_sample(const std::string& name) {
+  if (const auto data = shared_data(); data && std::filesystem::exists(*data / "occt" / name)) return *data / "occt" / name;
+  for (const char* folder : {"occ", "step", "iges", "stl"}) {
+    const std::filesystem::path p = std::filesystem::path("/usr/share/opencascade/data") / folder / name;
+    if (std::filesystem::exists(p)) return p;
+  }
+  return std::nullopt;
+}
+
 std::vector<Triangle> random_triangles(Rng& rng, int n, double size, double max_edge,
                                        const Vec3& center) {
   std::vector<Triangle> out;

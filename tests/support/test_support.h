@@ -25,6 +25,11 @@ struct Rng {
 /// The shared CAD data folder, or nullopt (tests then GTEST_SKIP with a message).
 std::optional<std::filesystem::path> shared_data();
 
+/// An OpenCASCADE sample file by name ("screw.step"): the shared data's occt/ copy when present,
+/// else Debian's occt-misc copy (/usr/share/opencascade/data/{occ,step,iges,stl}/, installed by
+/// scripts/setup.sh, so present in a fresh clone's CI; the same bytes). nullopt when neither has it.
+std::optional<std::filesystem::path> occt_sample(const std::string& name);
+
 /// n random triangles in a cube of side `size` centred at `center`, edge lengths up to
 /// `max_edge`.
 std::vector<Triangle> random_triangles(Rng& rng, int n, double size, double max_edge,
