@@ -20,24 +20,11 @@ namespace fs = std::filesystem;
 
 const fs::path kModels = "/usr/share/assimp/models";
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-// Every file of a format swept reads, sorted (so failures read the same on every run).
 std::vector<fs::path> models() {
-  static const std::set<std::string> formats{".stl", ".obj", ".ply", ".off", ".gltf", ".glb", ".dae"};
-  std::vector<fs::path> out;
-  for (const auto& e : fs::recursive_directory_iterator(kModels))
-    if (e.is_regular_file() && formats.count(lower(e.path().extension().string()))) out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
+  return files_under(kModels, {".stl", ".obj", ".ply", ".off", ".gltf", ".glb", ".dae"});
 }
 
-#define SKIP_WITHOUT_MODELS()                                                                         \
-  if (!fs::is_directory(kModels))                                                                     \
-  GTEST_SKIP() << kModels << " is missing: install Debian's assimp-testmodels (scripts/setup.sh does)"
+#define SKIP_WITHOUT_MODELS() SKIP_WITHOUT_PACKAGE(kModels, "assimp-testmodels")
 
 // The glTF JSON of a .gltf or .glb file (the GLB's first chunk).
 nlohmann::json gltf_json(const fs::path& file) {
@@ -111,7 +98,8 @@ TEST(AssimpTestModels, GltfScenesReadWithTheTrianglesTheyDeclare) {
   SKIP_WITHOUT_MODELS();
   std::size_t compared = 0;
   for (const fs::path& file : models()) {
-    const std::string ext = lower(file.extension().string());
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext != ".gltf" && ext != ".glb") continue;
     SCOPED_TRACE(file.string());
     const auto model = import_mesh(file);

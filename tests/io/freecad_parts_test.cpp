@@ -19,18 +19,9 @@ namespace fs = std::filesystem;
 
 const fs::path kParts = "/usr/share/freecad/Mod/Idf/Idflibs";
 
-#define SKIP_WITHOUT_PARTS()                                                                          \
-  if (!fs::is_directory(kParts))                                                                      \
-  GTEST_SKIP() << kParts << " is missing: install Debian's freecad-common (scripts/setup.sh does)"
+#define SKIP_WITHOUT_PARTS() SKIP_WITHOUT_PACKAGE(kParts, "freecad-common")
 
-std::vector<fs::path> parts() {
-  static const std::set<std::string> formats{".stp", ".step", ".igs", ".iges"};
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(kParts))
-    if (e.is_regular_file() && formats.count(e.path().extension().string())) out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
+std::vector<fs::path> parts() { return files_under(kParts, {".stp", ".step", ".igs", ".iges"}); }
 
 TEST(FreecadParts, EveryPartReads) {
   SKIP_WITHOUT_PARTS();

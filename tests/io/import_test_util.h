@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace swept::test {
 
@@ -44,6 +48,25 @@ void expect_error(const Result<T>& result, std::initializer_list<std::string> pa
   for (const std::string& p : parts)
     EXPECT_NE(result.error().message.find(p), std::string::npos)
         << "message '" << result.error().message << "' lacks '" << p << "'";
+}
+
+/// Skips the running test when `dir`, a Debian package's sample files, is missing.
+#define SKIP_WITHOUT_PACKAGE(dir, package)                                                       \
+  if (!std::filesystem::is_directory(dir))                                                       \
+  GTEST_SKIP() << (dir) << " is missing: install Debian's " package " (scripts/setup.sh does)"
+
+/// Every file under `dir` (recursively) whose extension, in lower case, is one of `formats`,
+/// sorted (so that failures read the same on every run).
+inline std::vector<std::filesystem::path> files_under(const std::filesystem::path& dir,
+                                                      const std::set<std::string>& formats) {
+  std::vector<std::filesystem::path> out;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    std::string ext = e.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (e.is_regular_file() && formats.count(ext)) out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 /// The readers' memory limit is not applied under AddressSanitizer (src/io/isolate.h).

@@ -15,18 +15,9 @@ namespace fs = std::filesystem;
 
 const fs::path kData = "/usr/share/opencascade/data";
 
-#define SKIP_WITHOUT_SAMPLES()                                                                        \
-  if (!fs::is_directory(kData))                                                                       \
-  GTEST_SKIP() << kData << " is missing: install Debian's occt-misc (scripts/setup.sh does)"
+#define SKIP_WITHOUT_SAMPLES() SKIP_WITHOUT_PACKAGE(kData, "occt-misc")
 
-std::vector<fs::path> samples() {
-  static const std::set<std::string> formats{".brep", ".step", ".stp", ".iges", ".igs", ".stl"};
-  std::vector<fs::path> out;
-  for (const auto& e : fs::recursive_directory_iterator(kData))
-    if (e.is_regular_file() && formats.count(e.path().extension().string())) out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
+std::vector<fs::path> samples() { return files_under(kData, {".brep", ".step", ".stp", ".iges", ".igs", ".stl"}); }
 
 // Each sample reads into finite triangles or fails with one line that starts with the file. At a
 // 1 mm deflection and a 1 GB reader, so that the terrain (12 GB at 0.1 mm) stays quick.
