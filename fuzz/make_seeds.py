@@ -153,6 +153,10 @@ def main():
     write(c("ply"), "tet_binary.ply", ply_binary(TET_V, TET_F))
     write(c("off"), "tet.off", off(TET_V, TET_F))
     write(c("off"), "cube_quad.off", "OFF\n# a square\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+    # swept's own OFF reader: Geomview's header variants, comments anywhere, polygons to clip.
+    write(c("off"), "l_shape_coff.off", "COFF 6 1 0 # an L\n0 0 0 255 0 0 #red\n3 0 0 0 0 255\n3 1 0 0.1 0.2 0.3\n"
+          "1 1 0 1 1 1\n1 3 0 0 0 0\n0 3 0 0 0 0\n\n# the face\n6 0 1 2 3 4 5 255 0 0\n")
+    write(c("off"), "homogeneous.off", "4nOFF 3\n4 2 0\n0 0 0 2\n2 0 0 2\n4 4 0 4\n0 3 0 3\n3 0 1 2\n3 0 2 3\n")
     write(c("gltf"), "tet.gltf", gltf(TET_V, TET_F))
     write(c("glb"), "tet.glb", glb(TET_V, TET_F))
     write(c("dae"), "tet_z_up.dae", dae(TET_V, TET_F))

@@ -1,6 +1,6 @@
-// OBJ, PLY, OFF, glTF/GLB and COLLADA through assimp. Post-processing is limited to validating
-// the scene and triangulating polygons so the soup stays as the file has it (no degenerate
-// removal, no vertex merging). The files are checked by format_checks.cpp first.
+// OBJ, PLY, glTF/GLB and COLLADA through assimp (STL and OFF too, for ompl_app_center alone).
+// Post-processing is limited to validating the scene and triangulating polygons so the soup
+// stays as the file has it (no degenerate removal, no vertex merging). The files are checked by format_checks.cpp first.
 #include "format_checks.h"
 #include "import_detail.h"
 

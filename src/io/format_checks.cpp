@@ -1,4 +1,4 @@
-// Our own checks of the formats assimp reads (format_checks.h): OBJ and OFF line by line,
+// Our own checks of the formats assimp reads (format_checks.h): OBJ line by line,
 // COLLADA's counts, glTF's references and declared faces; the tokenizer they share with the PLY
 // (ply_check.cpp) and IGES (iges_check.cpp) checks.
 #include "format_checks.h"
@@ -109,59 +109,6 @@ std::string check_obj(const std::string& text) {
     }
     return {};
   });
-}
-
-// OFF: header, counts, then the vertex and face lines.
-std::string check_off(const std::string& text) {
-  enum class Stage { header, counts, vertices, faces, done } stage = Stage::header;
-  long long nv = 0, nf = 0, seen_v = 0, seen_f = 0;
-  std::string err = for_each_line(text, [&](int, std::vector<std::string_view> tok) -> std::string {
-    if (stage == Stage::header) {
-      const std::string h = lower(std::string(tok[0]));
-      if (h != "off" && h != "coff" && h != "noff" && h != "cnoff")
-        return "expected the 'OFF' header, found " + quoted(tok[0]);
-      stage = Stage::counts;
-      tok.erase(tok.begin());
-      if (tok.empty()) return {};
-    }
-    if (stage == Stage::counts) {
-      if (tok.size() < 2 || !parse_int(tok[0], nv) || !parse_int(tok[1], nf) || nv < 0 || nf < 0)
-        return "expected the vertex and face counts";
-      stage = nv > 0 ? Stage::vertices : (nf > 0 ? Stage::faces : Stage::done);
-      return {};
-    }
-    if (stage == Stage::vertices) {
-      if (tok.size() < 3) return "a vertex needs 3 coordinates, found " + std::to_string(tok.size());
-      for (int k = 0; k < 3; ++k) {
-        double x;
-        if (std::string e = parse_number(tok[k], x); !e.empty()) return e + " (vertex " + std::to_string(seen_v) + ")";
-      }
-      if (++seen_v == nv) stage = nf > 0 ? Stage::faces : Stage::done;
-      return {};
-    }
-    if (stage == Stage::faces) {
-      long long k = 0;
-      if (!parse_int(tok[0], k) || k < 3) return "a face needs a vertex count of at least 3, found " + quoted(tok[0]);
-      if (static_cast<long long>(tok.size()) < k + 1)
-        return "face " + std::to_string(seen_f) + " lists fewer than its " + std::to_string(k) + " vertices";
-      for (long long i = 1; i <= k; ++i) {
-        long long idx = 0;
-        if (!parse_int(tok[i], idx)) return "malformed vertex index " + quoted(tok[i]);
-        if (idx < 0 || idx >= nv)
-          return "face " + std::to_string(seen_f) + " refers to vertex " + std::to_string(idx) + " of " + std::to_string(nv);
-      }
-      if (++seen_f == nf) stage = Stage::done;
-      return {};
-    }
-    return {};
-  });
-  if (!err.empty()) return err;
-  if (stage == Stage::header) return "no 'OFF' header";
-  if (stage == Stage::counts) return "unexpected end of file: no vertex and face counts";
-  if (stage != Stage::done)
-    return "unexpected end of file: header says " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
-           " faces, file holds " + std::to_string(seen_v) + " and " + std::to_string(seen_f);
-  return {};
 }
 
 // COLLADA: every count attribute (float_array, accessor, triangles, polylist, ...) counts items
@@ -287,12 +234,12 @@ std::string check_gltf_uris(const std::string& bytes, bool binary) {
 
 std::optional<Error> precheck(const ReadContext& ctx) {
   const std::string ext = lower(ctx.file.extension().string());
-  if (ext == ".stl") {
+  if (ext == ".stl" || ext == ".off") {
     std::vector<TriangleSoup> parts;
-    if (Result<bool> read = read_stl(ctx, parts); !read) return read.error();
+    if (Result<bool> read = ext == ".stl" ? read_stl(ctx, parts) : read_off(ctx, parts); !read) return read.error();
     return std::nullopt;
   }
-  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".dae" && ext != ".gltf" && ext != ".glb")
+  if (ext != ".obj" && ext != ".ply" && ext != ".dae" && ext != ".gltf" && ext != ".glb")
     return std::nullopt;
   Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
   if (!text) return text.error();
@@ -304,7 +251,6 @@ std::optional<Error> precheck(const ReadContext& ctx) {
     return std::nullopt;
   }
   const std::string err = ext == ".obj"   ? check_obj(*text)
-                          : ext == ".off" ? check_off(*text)
                           : ext == ".dae" ? check_dae_counts(*text)
                                           : check_ply(*text);
   if (!err.empty()) return file_error(ctx.display, err);

@@ -32,9 +32,10 @@ bool parse_int(std::string_view s, long long& v);
 /// "" when fine, else the reason with its line or element.
 std::string check_ply(const std::string& bytes);
 
-/// OBJ, OFF, PLY and COLLADA counts checked line by line, glTF's external references confined to
-/// the model's folder, and STL read by swept's reader (assimp takes a truncated binary STL
-/// silently; it reads STL only for ompl_app_center()). nullopt when fine or not ours to check.
+/// OBJ, PLY and COLLADA counts checked line by line, glTF's external references confined to the
+/// model's folder, and STL and OFF read by swept's readers (assimp takes a truncated binary STL
+/// silently; it reads STL and OFF only for ompl_app_center()). nullopt when fine or not ours to
+/// check.
 std::optional<Error> precheck(const ReadContext& ctx);
 
 /// IGES's record structure: 80-column records, sections in order, the Terminate record's line

@@ -28,7 +28,10 @@ struct ReadContext {
 /// STL, ASCII or binary (detected from the content, not the first five bytes alone).
 Result<bool> read_stl(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 
-/// OBJ, PLY, OFF, glTF/GLB, COLLADA through assimp.
+/// OFF (text; Geomview's header variants), polygons triangulated by ear clipping (polygon.h).
+Result<bool> read_off(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
+
+/// OBJ, PLY, glTF/GLB, COLLADA through assimp.
 Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 
 /// ompl_app_vertices() for the formats assimp reads (STL too: OMPL.app reads it with assimp).

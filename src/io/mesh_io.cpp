@@ -88,7 +88,7 @@ TriangleSoup ImportedModel::merged() const {
 
 namespace {
 
-enum class Reader { stl, assimp, cad };
+enum class Reader { stl, off, assimp, cad };  // stl and off: swept's own readers
 
 // The checks every reader shares (units, format, deflections, the file itself) and the context
 // the readers get; `reader` is set to the one the extension selects.
@@ -102,13 +102,12 @@ Result<io_detail::ReadContext> prepare(const std::filesystem::path& file, const 
 
   const std::string ext = lower(file.extension().string());
   const bool is_cad = ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep";
-  const bool is_assimp = ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".gltf" || ext == ".glb" ||
-                         ext == ".dae";
-  const bool is_stl = ext == ".stl";
-  if (!is_cad && !is_assimp && !is_stl)
+  const bool is_assimp = ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb" || ext == ".dae";
+  const bool is_stl = ext == ".stl", is_off = ext == ".off";
+  if (!is_cad && !is_assimp && !is_stl && !is_off)
     return file_error(display, "unknown format '" + (ext.empty() ? std::string("(no extension)") : ext) +
                                    "' (accepted: .stl .obj .ply .off .gltf .glb .dae .step .stp .iges .igs .brep)");
-  reader = is_stl ? Reader::stl : is_assimp ? Reader::assimp : Reader::cad;
+  reader = is_stl ? Reader::stl : is_off ? Reader::off : is_assimp ? Reader::assimp : Reader::cad;
 
   // glTF and COLLADA coordinates are metres (glTF by its spec; assimp applies COLLADA's <unit>).
   std::string file_unit = options.file_unit;
@@ -236,14 +235,14 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   if (!prepared) return prepared.error();
   io_detail::ReadContext& ctx = *prepared;
   const std::string& display = ctx.display;
-  const bool is_stl = reader == Reader::stl, is_assimp = reader == Reader::assimp;
 
   ImportedModel model;
   model.file = display;
   model.unit = options.unit;
   ctx.warnings = &model.warnings;
-  Result<bool> read = is_stl ? io_detail::read_stl(ctx, model.parts)
-                              : read_isolated(ctx, is_assimp ? Reader::assimp : Reader::cad, model.parts, model.warnings);
+  Result<bool> read = reader == Reader::stl   ? io_detail::read_stl(ctx, model.parts)
+                     : reader == Reader::off ? io_detail::read_off(ctx, model.parts)
+                                             : read_isolated(ctx, reader, model.parts, model.warnings);
   if (!read) return read.error();
 
   // Drop parts without triangles (empty solids, point clouds, a solid that did not mesh), each
