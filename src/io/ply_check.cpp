@@ -119,9 +119,14 @@ std::string check_ply(const std::string& bytes) {
     }
   }
   if (format.empty()) return "the header has no 'format' line";
-  long long vertices = 0;  // count of the 'vertex' element, which face indices refer to
-  for (const PlyElement& e : elements)
+  long long vertices = 0, faces = 0;  // the 'vertex' element's count, which face indices refer to
+  for (const PlyElement& e : elements) {
     if (e.name == "vertex") vertices = e.count;
+    if (e.name == "face" || e.name == "tristrips") faces += e.count;
+  }
+  // A point cloud (assimp: "Validation failed: Mesh  contains no faces").
+  if (faces == 0 && vertices > 0)
+    return "holds no faces, only " + std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices") + " (a point cloud)";
 
   if (format == "ascii") {
     for (const PlyElement& e : elements) {

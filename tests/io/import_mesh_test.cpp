@@ -352,6 +352,27 @@ TEST(ImportObj, FaceIndexPastTheVertexListIsAnError) {
   expect_error(import_mesh(relative), {relative.string(), "line 4", "vertex -4"});
 }
 
+// README: OBJ, PLY, glTF and COLLADA come through Debian's assimp in single precision (built
+// without ASSIMP_DOUBLE_PRECISION). If a later assimp keeps doubles, this fails and the README
+// should say so.
+TEST(ImportObj, CoordinatesComeThroughAssimpInSinglePrecision) {
+  const auto dir = scratch_dir();
+  const auto model = import_mesh(write_file(dir / "precise.obj", "v 1001.123456789012 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n"));
+  ASSERT_TRUE(model.ok()) << model.error().message;
+  const double x = model->merged().triangles.at(0).p.x();
+  EXPECT_EQ(x, static_cast<double>(static_cast<float>(1001.123456789012)));
+  EXPECT_LE(std::abs(x - 1001.123456789012), 6e-8 * 1001.123456789012);
+}
+
+// A PLY of points alone (CGAL's point sets) is refused saying so; assimp said "Validation failed:
+// Mesh  contains no faces".
+TEST(ImportPly, PointCloudIsRefusedSayingSo) {
+  const auto dir = scratch_dir();
+  const auto cloud = write_file(dir / "cloud.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                                                   "property double y\nproperty double z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  expect_error(import_mesh(cloud), {cloud.string() + ": holds no faces, only 3 vertices (a point cloud)"});
+}
+
 TEST(ImportOff, FaceIndexPastTheVertexListIsAnError) {
   const auto dir = scratch_dir();
   const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
