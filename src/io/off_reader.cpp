@@ -112,9 +112,6 @@ Result<bool> read_off(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
     }
   }
   // The rest of the counts line (the edge count, unused) is skipped; vertices start on a new line.
-  if (nf == 0)
-    return file_error(ctx.display, "holds no faces, only " + std::to_string(nv) + (nv == 1 ? " vertex" : " vertices") +
-                                       " (a point cloud)");
 
   // A vertex line takes at least 6 bytes, a face line 8: no reservation past what the file can hold.
   const auto fits = [&](long long count, std::size_t bytes_each) {
@@ -143,6 +140,10 @@ Result<bool> read_off(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
     if (!p.allFinite()) return at("vertex " + std::to_string(i) + " is not finite in the output unit");
     vertices.push_back(p);
   }
+
+  if (nf == 0)  // after the vertices, so that a broken point cloud is reported as broken
+    return file_error(ctx.display, "holds no faces, only " + std::to_string(nv) + (nv == 1 ? " vertex" : " vertices") +
+                                       " (a point cloud)");
 
   TriangleSoup soup;
   soup.name = ctx.file.stem().string();

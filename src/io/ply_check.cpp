@@ -124,9 +124,12 @@ std::string check_ply(const std::string& bytes) {
     if (e.name == "vertex") vertices = e.count;
     if (e.name == "face" || e.name == "tristrips") faces += e.count;
   }
-  // A point cloud (assimp: "Validation failed: Mesh  contains no faces").
-  if (faces == 0 && vertices > 0)
-    return "holds no faces, only " + std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices") + " (a point cloud)";
+  // A whole point cloud (assimp: "Validation failed: Mesh  contains no faces"); a broken one is
+  // reported as broken first.
+  const std::string cloud =
+      faces == 0 && vertices > 0
+          ? "holds no faces, only " + std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices") + " (a point cloud)"
+          : std::string();
 
   if (format == "ascii") {
     for (const PlyElement& e : elements) {
@@ -167,7 +170,7 @@ std::string check_ply(const std::string& bytes) {
         }
       }
     }
-    return {};
+    return cloud;
   }
 
   const bool little = format == "binary_little_endian";
@@ -200,7 +203,7 @@ std::string check_ply(const std::string& bytes) {
       }
     }
   }
-  return {};
+  return cloud;
 }
 
 }  // namespace swept::io_detail
