@@ -62,23 +62,49 @@ bool parse_int(std::string_view s, long long& v) {
 
 namespace {
 
-// Calls f(line_number, tokens) for every line with tokens after stripping '#' comments;
-// stops at the first non-empty string f returns.
+// OBJ's statements: calls f(line_number, tokens, commented) for every statement with tokens, '#'
+// comments stripped (`commented`: the statement had one after its tokens); a line ending in '\\'
+// continues on the next (as assimp joins them), numbered by its first line. Stops at the first
+// non-empty string f returns.
 template <class F>
-std::string for_each_line(const std::string& text, F&& f) {
+std::string for_each_statement(const std::string& text, F&& f) {
   std::size_t pos = 0;
   int line_no = 0;
+  std::string joined;  // a statement continued over several lines
+  std::vector<std::string_view> tokens;
   while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string::npos) end = text.size();
-    std::string_view line(text.data() + pos, end - pos);
-    pos = end + 1;
-    ++line_no;
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    auto tokens = split(line);
+    const int first_line = line_no + 1;
+    joined.clear();
+    std::string_view line;
+    bool commented = false;
+    for (;;) {
+      std::size_t end = text.find('\n', pos);
+      if (end == std::string::npos) end = text.size();
+      std::string_view part(text.data() + pos, end - pos);
+      pos = end + 1;
+      ++line_no;
+      if (const std::size_t hash = part.find('#'); hash != std::string_view::npos) {
+        part = part.substr(0, hash);
+        commented = commented || !split(part).empty() || !joined.empty();
+      }
+      std::size_t last = part.find_last_not_of(" \t\r");
+      const bool continued = last != std::string_view::npos && part[last] == '\\' && pos < text.size();
+      if (!continued && joined.empty()) {
+        line = part;
+        break;
+      }
+      joined.append(part.substr(0, continued ? last : part.size()));
+      joined.push_back(' ');
+      if (!continued) {
+        line = joined;
+        break;
+      }
+    }
+    tokens.clear();
+    split(line, tokens);
     if (tokens.empty()) continue;
-    std::string err = f(line_no, tokens);
-    if (!err.empty()) return "line " + std::to_string(line_no) + ": " + err;
+    std::string err = f(first_line, tokens, commented);
+    if (!err.empty()) return "line " + std::to_string(first_line) + ": " + err;
   }
   return {};
 }
@@ -87,7 +113,7 @@ std::string for_each_line(const std::string& text, F&& f) {
 // (1-based, or negative = relative to the last vertex, to a vertex already defined).
 std::string check_obj(const std::string& text) {
   long long vertices = 0;
-  return for_each_line(text, [&](int, const std::vector<std::string_view>& tok) -> std::string {
+  return for_each_statement(text, [&](int, const std::vector<std::string_view>& tok, bool commented) -> std::string {
     if (tok[0] == "v") {
       if (tok.size() < 4) return "a vertex needs 3 coordinates, found " + std::to_string(tok.size() - 1);
       for (int k = 1; k <= 3; ++k) {
@@ -96,6 +122,9 @@ std::string check_obj(const std::string& text) {
       }
       ++vertices;
     } else if (tok[0] == "f") {
+      if (commented)  // assimp: "OBJ: Invalid face index.", without a line
+        return "a comment after a face's vertices, which assimp's OBJ reader cannot read; put the comment on a "
+               "line of its own";
       if (tok.size() < 4) return "a face needs at least 3 vertices, found " + std::to_string(tok.size() - 1);
       for (std::size_t k = 1; k < tok.size(); ++k) {
         std::string_view ref = tok[k].substr(0, tok[k].find('/'));

@@ -352,6 +352,26 @@ TEST(ImportObj, FaceIndexPastTheVertexListIsAnError) {
   expect_error(import_mesh(relative), {relative.string(), "line 4", "vertex -4"});
 }
 
+// OBJ's line continuation: assimp joins a line ending in a backslash with the next, and so does
+// our check now (it refused "malformed face vertex '\\'"). A comment after a face's vertices
+// makes assimp fail with "OBJ: Invalid face index." and no line; our check names the line.
+TEST(ImportObj, ContinuedLinesReadAndCommentsAfterFacesNameTheLine) {
+  const auto dir = scratch_dir();
+  const std::string square = "v 0 0 0\nv 1 0 0 # a comment after a vertex is read\nv 1 1 0\nv 0 1 0\n";
+  const auto continued = import_mesh(write_file(dir / "continued.obj", square + "f 1 2 \\\n  3 4\n"));
+  ASSERT_TRUE(continued.ok()) << continued.error().message;
+  EXPECT_EQ(continued->triangle_count(), 2u);
+  double total = 0.0;
+  for (const Triangle& t : continued->merged().triangles) total += area(t);
+  EXPECT_NEAR(total, 1.0, 1e-15);
+
+  const auto commented = write_file(dir / "commented.obj", square + "# a face\nf 1 2 3 4 # the square\n");
+  expect_error(import_mesh(commented), {commented.string(), "line 6", "a comment after a face's vertices"});
+  // The continued statement is numbered by its first line.
+  const auto both = write_file(dir / "both.obj", square + "f 1 2 \\\n3 4 # the square\n");
+  expect_error(import_mesh(both), {both.string(), "line 5", "a comment after a face's vertices"});
+}
+
 // README: OBJ, PLY, glTF and COLLADA come through Debian's assimp in single precision (built
 // without ASSIMP_DOUBLE_PRECISION). If a later assimp keeps doubles, this fails and the README
 // should say so.
