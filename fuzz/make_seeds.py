@@ -7,6 +7,7 @@ import base64
 import json
 import os
 import struct
+import zipfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CORPUS = os.path.join(HERE, "corpus")
@@ -25,6 +26,34 @@ def write(folder, name, data):
     mode = "wb" if isinstance(data, bytes) else "w"
     with open(os.path.join(folder, name), mode) as f:
         f.write(data)
+
+
+def threemf(entries):
+    """A 3MF package (a ZIP) of the given parts, stored uncompressed (mutations then reach the
+    XML) and dated 1980-01-01 so that the bytes depend on the parts alone."""
+    import io
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_STORED) as z:
+        for name, text in entries:
+            z.writestr(zipfile.ZipInfo(name, (1980, 1, 1, 0, 0, 0)), text)
+    return buf.getvalue()
+
+
+THREEMF_RELS = ('<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.openxmlformats.org/'
+                'package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="r0" '
+                'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>\n')
+
+
+def threemf_model(unit, resources, build):
+    return ('<?xml version="1.0" encoding="UTF-8"?>\n<model xmlns="http://schemas.microsoft.com/3dmanufacturing/core/'
+            '2015/02" xmlns:p="http://schemas.microsoft.com/3dmanufacturing/production/2015/06" unit="%s">\n'
+            '<resources>\n%s</resources>\n<build>\n%s</build>\n</model>\n' % (unit, resources, build))
+
+
+def threemf_object(oid, v, f):
+    return ('<object id="%d" type="model"><mesh><vertices>\n' % oid +
+            "".join('<vertex x="%g" y="%g" z="%g"/>\n' % p for p in v) + "</vertices><triangles>\n" +
+            "".join('<triangle v1="%d" v2="%d" v3="%d"/>\n' % t for t in f) + "</triangles></mesh></object>\n")
 
 
 def normal(v, f):
@@ -157,6 +186,18 @@ def main():
     write(c("off"), "l_shape_coff.off", "COFF 6 1 0 # an L\n0 0 0 255 0 0 #red\n3 0 0 0 0 255\n3 1 0 0.1 0.2 0.3\n"
           "1 1 0 1 1 1\n1 3 0 0 0 0\n0 3 0 0 0 0\n\n# the face\n6 0 1 2 3 4 5 255 0 0\n")
     write(c("off"), "homogeneous.off", "4nOFF 3\n4 2 0\n0 0 0 2\n2 0 0 2\n4 4 0 4\n0 3 0 3\n3 0 1 2\n3 0 2 3\n")
+    write(c("3mf"), "tet.3mf", threemf([("_rels/.rels", THREEMF_RELS),
+                                        ("3D/3dmodel.model", threemf_model("millimeter", threemf_object(1, TET_V, TET_F),
+                                                                           '<item objectid="1"/>\n'))]))
+    write(c("3mf"), "components.3mf", threemf([
+        ("_rels/.rels", THREEMF_RELS),
+        ("3D/3dmodel.model", threemf_model(
+            "inch", '<object id="2" name="pair"><components>\n'
+            '<component objectid="1" transform="0 1 0 -1 0 0 0 0 1 0 0 0"/>\n'
+            '<component p:path="/3D/Objects/cube.model" objectid="1" transform="1 0 0 0 1 0 0 0 1 10 0 0"/>\n'
+            '</components></object>\n' + threemf_object(1, TET_V, TET_F),
+            '<item objectid="2" transform="1 0 0 0 1 0 0 0 1 0 0 5"/>\n')),
+        ("3D/Objects/cube.model", threemf_model("inch", threemf_object(1, CUBE_V, CUBE_F), ""))]))
     write(c("gltf"), "tet.gltf", gltf(TET_V, TET_F))
     write(c("glb"), "tet.glb", glb(TET_V, TET_F))
     write(c("dae"), "tet_z_up.dae", dae(TET_V, TET_F))

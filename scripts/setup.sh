@@ -16,7 +16,7 @@ packages=(
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels occt-misc freecad-common
-  libfcl-dev libompl-dev zlib1g-dev
+  libfcl-dev libompl-dev zlib1g-dev libminizip-dev libexpat1-dev
   chromium
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-tqdm
 )

@@ -20,7 +20,7 @@ void add_import_options(CLI::App& cmd, ImportCliOptions& o) {
   cmd.add_option("--angular-deflection", o.angular_deflection, "BRepMesh angular deflection for CAD files, radians")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd.add_option("--max-triangles", o.max_triangles,
-                 "Most triangles a CAD file may tessellate into (estimated before meshing; past it: exit 1)")
+                 "Most triangles a CAD file may tessellate into (estimated before meshing), or a 3MF build place; past it: exit 1")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd.add_option("--unit", o.unit, "Length unit of the output: m, cm, mm, um, in, ft")->capture_default_str();
   cmd.add_option("--file-unit", o.file_unit, "Unit of mesh files' coordinates (default mm; CAD files carry their own)");

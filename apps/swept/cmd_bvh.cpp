@@ -105,7 +105,7 @@ void add_bvh_command(CLI::App& app) {
       "Build RSS trees and report the paper's Table II/IV figures: triangles, nodes, depth, total RSS\n"
       "surface area and volume, build time and memory, per file and fitter. A CAD file with several\n"
       "solids counts as one soup (all parts together).");
-  cmd->add_option("files", o->files, "Mesh or CAD files (STL, OBJ, PLY, OFF, glTF/GLB, DAE, STEP, IGES, BREP)")
+  cmd->add_option("files", o->files, "Mesh or CAD files (STL, OBJ, PLY, OFF, 3MF, glTF/GLB, DAE, STEP, IGES, BREP)")
       ->required()->check(CLI::ExistingFile);
   add_fitter_option(*cmd, o->fitter, "Fitter", true)->capture_default_str();
   add_split_option(*cmd, o->split, "Split rule", true)->capture_default_str();

@@ -71,7 +71,7 @@ void add_mesh_stats_command(CLI::App& app) {
       "<= 1e-12), largest/smallest area ratio, median aspect ratio (longest edge / smallest height) and\n"
       "the share of triangles with aspect ratio > 10 (both over the non-degenerate triangles).\n"
       "A file with several parts counts as one mesh.");
-  cmd->add_option("files", o->files, "Mesh or CAD files (STL, OBJ, PLY, OFF, glTF/GLB, DAE, STEP, IGES, BREP)")
+  cmd->add_option("files", o->files, "Mesh or CAD files (STL, OBJ, PLY, OFF, 3MF, glTF/GLB, DAE, STEP, IGES, BREP)")
       ->required()->check(CLI::ExistingFile);
   add_import_options(*cmd, o->import);
   cmd->add_flag("--json", o->json, "Print one JSON document instead of the table");

@@ -229,7 +229,7 @@ Mesh(vertices, faces, name="", unit="mm") makes one from an (N, 3) float array o
       .def_static("load", &mesh_load, pyb::arg("path"), pyb::arg("unit") = "mm", pyb::arg("deflection") = pyb::none(),
                   pyb::arg("file_unit") = pyb::none(), pyb::arg("angular_deflection") = pyb::none(),
                   pyb::arg("max_triangles") = pyb::none(), R"doc(
-Reads a mesh or CAD file (STL, OBJ, PLY, OFF, glTF/GLB, DAE, STEP, IGES, BREP), every part merged
+Reads a mesh or CAD file (STL, OBJ, PLY, OFF, 3MF, glTF/GLB, DAE, STEP, IGES, BREP), every part merged
 into one mesh, coordinates in `unit` (m, cm, mm, um, in, ft). `deflection`: BRepMesh linear
 deflection for CAD files, in `unit` (default 0.1); `file_unit`: the unit of a mesh file's
 coordinates (default: mm, or m for glTF). Raises swept.Error with the message `swept bvh` prints

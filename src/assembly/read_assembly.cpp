@@ -227,7 +227,7 @@ Result<Assembly> read_folder(const fs::path& folder, const AssemblyReadOptions& 
 }  // namespace
 
 const std::vector<std::string>& assembly_mesh_extensions() {
-  static const std::vector<std::string> kExtensions{".stl", ".obj", ".ply", ".off", ".gltf", ".glb", ".dae",
+  static const std::vector<std::string> kExtensions{".stl", ".obj", ".ply", ".off", ".3mf", ".gltf", ".glb", ".dae",
                                                     ".step", ".stp", ".iges", ".igs", ".brep"};
   return kExtensions;
 }

@@ -31,6 +31,10 @@ Result<bool> read_stl(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 /// OFF (text; Geomview's header variants), polygons triangulated by ear clipping (polygon.h).
 Result<bool> read_off(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 
+/// 3MF (core specification and the production extension's model parts); the model's declared
+/// unit, not the file unit, scales it.
+Result<bool> read_3mf(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
+
 /// OBJ, PLY, glTF/GLB, COLLADA through assimp.
 Result<bool> read_with_assimp(const ReadContext& ctx, std::vector<TriangleSoup>& parts);
 

@@ -88,7 +88,7 @@ TriangleSoup ImportedModel::merged() const {
 
 namespace {
 
-enum class Reader { stl, off, assimp, cad };  // stl and off: swept's own readers
+enum class Reader { stl, off, threemf, assimp, cad };  // stl, off, threemf: swept's own readers
 
 // The checks every reader shares (units, format, deflections, the file itself) and the context
 // the readers get; `reader` is set to the one the extension selects.
@@ -103,11 +103,11 @@ Result<io_detail::ReadContext> prepare(const std::filesystem::path& file, const 
   const std::string ext = lower(file.extension().string());
   const bool is_cad = ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep";
   const bool is_assimp = ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb" || ext == ".dae";
-  const bool is_stl = ext == ".stl", is_off = ext == ".off";
-  if (!is_cad && !is_assimp && !is_stl && !is_off)
+  const bool is_stl = ext == ".stl", is_off = ext == ".off", is_3mf = ext == ".3mf";
+  if (!is_cad && !is_assimp && !is_stl && !is_off && !is_3mf)
     return file_error(display, "unknown format '" + (ext.empty() ? std::string("(no extension)") : ext) +
-                                   "' (accepted: .stl .obj .ply .off .gltf .glb .dae .step .stp .iges .igs .brep)");
-  reader = is_stl ? Reader::stl : is_off ? Reader::off : is_assimp ? Reader::assimp : Reader::cad;
+                                   "' (accepted: .stl .obj .ply .off .3mf .gltf .glb .dae .step .stp .iges .igs .brep)");
+  reader = is_stl ? Reader::stl : is_off ? Reader::off : is_3mf ? Reader::threemf : is_assimp ? Reader::assimp : Reader::cad;
 
   // glTF and COLLADA coordinates are metres (glTF by its spec; assimp applies COLLADA's <unit>).
   std::string file_unit = options.file_unit;
@@ -242,6 +242,7 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
   ctx.warnings = &model.warnings;
   Result<bool> read = reader == Reader::stl   ? io_detail::read_stl(ctx, model.parts)
                      : reader == Reader::off ? io_detail::read_off(ctx, model.parts)
+                     : reader == Reader::threemf ? io_detail::read_3mf(ctx, model.parts)
                                              : read_isolated(ctx, reader, model.parts, model.warnings);
   if (!read) return read.error();
 

@@ -1,8 +1,8 @@
 #pragma once
 /// Mesh and CAD import into triangle soups (double precision), one soup per part.
 ///
-/// STL (ASCII/binary) is read by swept itself in double precision; OBJ, PLY, OFF, glTF/GLB and
-/// COLLADA with assimp; CAD (STEP, IGES, OCCT .brep) with OpenCASCADE, tessellated by BRepMesh,
+/// STL (ASCII/binary), OFF and 3MF are read by swept itself in double precision; OBJ, PLY,
+/// glTF/GLB and COLLADA with assimp (single precision); CAD (STEP, IGES, OCCT .brep) with OpenCASCADE, tessellated by BRepMesh,
 /// assembly placements applied. Bad input gives an Error naming the file and the line, triangle or entity.
 #include "swept/geometry/result.h"
 #include "swept/geometry/types.h"
@@ -27,7 +27,8 @@ struct ImportOptions {
   /// Unit of the file's coordinates. Empty: "mm" for STL, OBJ, PLY, OFF and .brep; "m" for
   /// glTF/GLB (its spec) and COLLADA (assimp applies the file's <unit>, and its <up_axis> as
   /// assimp and OMPL.app do by default: Z_UP (x, y, z) reads as (x, z, -y)). Ignored for STEP and
-  /// IGES, which declare their unit (e.g. inch) and are converted from it.
+  /// IGES, which declare their unit (e.g. inch) and are converted from it. A 3MF model declares its
+  /// unit (millimeter when it does not say): a file unit given for it must be the same.
   std::string file_unit;
   /// BRepMesh linear deflection (max chord distance to the surface) in the *output* unit;
   /// CAD formats only, must be > 0.
@@ -39,7 +40,8 @@ struct ImportOptions {
   /// and counted again as the triangles are collected; past it the import is an error naming
   /// this limit, instead of meshing until memory runs out (a tiny deflection on a curved part).
   /// CAD formats only, must be > 0. BRepMesh peaks at about 1 KB per triangle while meshing
-  /// (measured, OCCT 7.6), the soup keeps 72 bytes: 5 million triangles peak near 5 GB.
+  /// (measured, OCCT 7.6), the soup keeps 72 bytes: 5 million triangles peak near 5 GB. It also
+  /// bounds the triangles a 3MF build places (its components may repeat an object many times).
   std::size_t max_triangles = 5'000'000;
   /// Run the third-party readers (assimp, OpenCASCADE) in a child process, so that a crash, a
   /// failed assert, a hang or a leak of theirs on a malformed file becomes an Error naming the
@@ -76,10 +78,14 @@ struct ImportedModel {
 
 /// Reads a mesh or CAD file; the format is chosen from the extension (case-insensitive):
 /// .stl → swept's own reader (ASCII and binary, double precision, exact line/triangle errors);
-/// .obj .ply .off .gltf .glb .dae → assimp (aiProcess_ValidateDataStructure and
+/// .off → swept's own reader (Geomview's header variants, polygons of any size by ear clipping);
+/// .3mf → swept's own reader (minizip and expat: the core specification, build items and
+/// components placed, the production extension's model parts; one part per build item);
+/// .obj .ply .gltf .glb .dae → assimp (aiProcess_ValidateDataStructure and
 /// aiProcess_Triangulate only: degenerate triangles and duplicate vertices are kept);
 /// .step .stp .iges .igs .brep → OpenCASCADE (XCAF for assembly placements and names; BRepMesh in
-/// parallel, deterministic). Part names: STL solid names, assimp mesh/node names, STEP/IGES
+/// parallel, deterministic). Part names: STL solid names, 3MF object names ("object <id>" for an
+/// unnamed one), assimp mesh/node names, STEP/IGES
 /// product names, "<stem>_solid<k>" for .brep solids; repeated names get "#2", "#3", ... in file
 /// order. Parts without triangles are dropped, each named in a warning (unless the file holds
 /// nothing else: then it is an error).
@@ -106,7 +112,7 @@ Result<ImportedModel> import_mesh(const std::filesystem::path& file, const Impor
 /// post-processing aiProcess_GenNormals | Triangulate | JoinIdenticalVertices | SortByPType |
 /// OptimizeGraph. Vertices are joined only where position *and* face normal agree, so a corner
 /// shared by faces of different normals counts once per normal, and a corner inside a flat
-/// region once. STL, OBJ, PLY, OFF, glTF and COLLADA (its <unit> and <up_axis> applied) go
+/// region once. STL, OBJ, PLY, OFF, 3MF, glTF and COLLADA (its <unit> and <up_axis> applied) go
 /// through assimp as in OMPL.app; the mean is summed in double precision (OMPL.app: float).
 /// CAD files, which OMPL.app cannot read, give the mean of the tessellation's distinct vertex
 /// positions. In options.unit, from options.file_unit as import_mesh(); errors as import_mesh().
