@@ -22,6 +22,38 @@ std::vector<std::string_view> split(std::string_view line);
 void split(std::string_view line, std::vector<std::string_view>& out);
 /// `s` in quotes for a message, shortened when long.
 std::string quoted(std::string_view s);
+/// The lines of a whole text split into tokens, with 1-based line numbers: blank lines are
+/// skipped, and with `strip_comments` what follows a '#' on a line (OFF).
+class TextLines {
+ public:
+  TextLines(const std::string& text, bool strip_comments) : text_(text), strip_comments_(strip_comments) {}
+
+  /// The next line with tokens, into `tokens` (cleared first); false at end of file.
+  bool next(std::vector<std::string_view>& tokens) {
+    tokens.clear();
+    while (pos_ < text_.size()) {
+      std::size_t end = text_.find('\n', pos_);
+      if (end == std::string::npos) end = text_.size();
+      std::string_view line(text_.data() + pos_, end - pos_);
+      pos_ = end + 1;
+      ++line_;
+      if (strip_comments_)
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      split(line, tokens);
+      if (!tokens.empty()) return true;
+    }
+    return false;
+  }
+  /// The line `next` returned last.
+  int line() const { return line_; }
+
+ private:
+  const std::string& text_;
+  bool strip_comments_;
+  std::size_t pos_ = 0;
+  int line_ = 0;
+};
+
 /// Parses a decimal number; "" on success, else the reason.
 std::string parse_number(std::string_view s, double& x);
 /// Parses an integer; false if it is not one.

@@ -15,34 +15,6 @@ namespace swept::io_detail {
 
 namespace {
 
-// The lines of a text with their tokens, '#' comments removed, 1-based line numbers.
-class OffLines {
- public:
-  explicit OffLines(const std::string& text) : text_(text) {}
-
-  /// Next line with tokens; false at end of file.
-  bool next(std::vector<std::string_view>& tokens) {
-    tokens.clear();
-    while (pos_ < text_.size()) {
-      std::size_t end = text_.find('\n', pos_);
-      if (end == std::string::npos) end = text_.size();
-      std::string_view line(text_.data() + pos_, end - pos_);
-      pos_ = end + 1;
-      ++line_;
-      if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-      split(line, tokens);
-      if (!tokens.empty()) return true;
-    }
-    return false;
-  }
-  int line() const { return line_; }
-
- private:
-  const std::string& text_;
-  std::size_t pos_ = 0;
-  int line_ = 0;
-};
-
 // The header keyword: Geomview's [ST][C][N][4][n]OFF. Only the coordinates are read; texture
 // coordinates, normals and colours after them on a vertex line are skipped.
 struct OffHeader {
@@ -74,7 +46,7 @@ Result<bool> read_off(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
   Result<std::string> bytes = read_file_bytes(ctx.file, ctx.display);
   if (!bytes) return bytes.error();
   const std::string& text = *bytes;
-  OffLines lines(text);
+  TextLines lines(text, true);
   std::vector<std::string_view> tok;
   auto at = [&](const std::string& what) { return file_error(ctx.display, "line " + std::to_string(lines.line()) + ": " + what); };
 

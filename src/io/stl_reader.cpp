@@ -88,43 +88,8 @@ Result<bool> read_binary(const ReadContext& ctx, const std::string& bytes, std::
   return true;
 }
 
-// Line-oriented tokenizer over the whole file, tracking 1-based line numbers.
-class Lines {
- public:
-  explicit Lines(const std::string& text) : text_(text) {}
-
-  /// Next non-blank line split into tokens; false at end of file.
-  bool next(std::vector<std::string_view>& tokens) {
-    tokens.clear();
-    while (pos_ < text_.size()) {
-      std::size_t end = text_.find('\n', pos_);
-      if (end == std::string::npos) end = text_.size();
-      std::string_view line(text_.data() + pos_, end - pos_);
-      pos_ = end + 1;
-      ++line_;
-      split(line, tokens);
-      if (!tokens.empty()) return true;
-    }
-    return false;
-  }
-  int line() const { return line_; }
-
- private:
-  const std::string& text_;
-  std::size_t pos_ = 0;
-  int line_ = 0;
-};
-
-std::string quoted(std::string_view s) {
-  std::string out(1, '\'');
-  out.append(s.substr(0, 40));
-  if (s.size() > 40) out.append("...");
-  out.push_back('\'');
-  return out;
-}
-
 Result<bool> read_ascii(const ReadContext& ctx, const std::string& text, std::vector<TriangleSoup>& parts) {
-  Lines lines(text);
+  TextLines lines(text, false);
   std::vector<std::string_view> tok;
   auto at = [&](const std::string& what) { return file_error(ctx.display, "line " + std::to_string(lines.line()) + ": " + what); };
   auto expect = [&](std::string_view keyword, std::string_view after, std::size_t min_tokens) -> Result<bool> {

@@ -50,6 +50,17 @@ void expect_error(const Result<T>& result, std::initializer_list<std::string> pa
         << "message '" << result.error().message << "' lacks '" << p << "'";
 }
 
+/// Asserts that importing `file` fails with a message that names the file and contains every one
+/// of `parts`.
+inline void expect_import_error(const std::filesystem::path& file, std::initializer_list<std::string> parts) {
+  const Result<ImportedModel> result = import_mesh(file);
+  ASSERT_FALSE(result.ok()) << file << ": expected an error";
+  EXPECT_NE(result.error().message.find(file.string()), std::string::npos) << result.error().message;
+  for (const std::string& p : parts)
+    EXPECT_NE(result.error().message.find(p), std::string::npos)
+        << "message '" << result.error().message << "' lacks '" << p << "'";
+}
+
 /// Skips the running test when `dir`, a Debian package's sample files, is missing.
 #define SKIP_WITHOUT_PACKAGE(dir, package)                                                       \
   if (!std::filesystem::is_directory(dir))                                                       \
