@@ -23,7 +23,7 @@ void add_import_options(CLI::App& cmd, ImportCliOptions& o) {
                  "Most triangles a CAD file may tessellate into (estimated before meshing), or a 3MF build place; past it: exit 1")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd.add_option("--unit", o.unit, "Length unit of the output: m, cm, mm, um, in, ft")->capture_default_str();
-  cmd.add_option("--file-unit", o.file_unit, "Unit of mesh files' coordinates (default mm; CAD files carry their own)");
+  cmd.add_option("--file-unit", o.file_unit, "Unit of mesh files' coordinates (default mm; CAD and 3MF files carry their own)");
 }
 
 CLI::Option* add_fitter_option(CLI::App& cmd, std::string& text, const std::string& help, bool allow_all) {

@@ -232,7 +232,7 @@ Mesh(vertices, faces, name="", unit="mm") makes one from an (N, 3) float array o
 Reads a mesh or CAD file (STL, OBJ, PLY, OFF, 3MF, glTF/GLB, DAE, STEP, IGES, BREP), every part merged
 into one mesh, coordinates in `unit` (m, cm, mm, um, in, ft). `deflection`: BRepMesh linear
 deflection for CAD files, in `unit` (default 0.1); `file_unit`: the unit of a mesh file's
-coordinates (default: mm, or m for glTF). Raises swept.Error with the message `swept bvh` prints
+coordinates (default: mm, or m for glTF; a 3MF declares its own, which a file_unit given must match). Raises swept.Error with the message `swept bvh` prints
 (naming the file and the line, triangle or entity) on bad input.)doc")
       .def_property_readonly("vertices", [](const PyMesh& s) { return s.vertices; }, "(N, 3) float64 array")
       .def_property_readonly("faces", [](const PyMesh& s) { return s.faces; }, "(M, 3) int64 array of vertex indices")
