@@ -272,6 +272,10 @@ std::optional<Error> precheck(const ReadContext& ctx) {
     return std::nullopt;
   Result<std::string> text = read_file_bytes(ctx.file, ctx.display);
   if (!text) return text.error();
+  if ((ext == ".obj" || ext == ".ply") && text->starts_with(kUtf8Bom))  // assimp: "vertex index out of range", "Incorrect magic number"
+    return file_error(ctx.display, "starts with a UTF-8 byte-order mark, which assimp's " +
+                                       std::string(ext == ".obj" ? "OBJ" : "PLY") +
+                                       " reader cannot read; save the file without it (\"UTF-8\", not \"UTF-8 with BOM\")");
   if (ext == ".glb") {
     if (std::string err = check_glb_container(*text); !err.empty()) return file_error(ctx.display, err);
   }

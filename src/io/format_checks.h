@@ -22,11 +22,16 @@ std::vector<std::string_view> split(std::string_view line);
 void split(std::string_view line, std::vector<std::string_view>& out);
 /// `s` in quotes for a message, shortened when long.
 std::string quoted(std::string_view s);
-/// The lines of a whole text split into tokens, with 1-based line numbers: blank lines are
-/// skipped, and with `strip_comments` what follows a '#' on a line (OFF).
+/// The UTF-8 byte-order mark some Windows editors put in front of a text file.
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
+/// The lines of a whole text split into tokens, with 1-based line numbers: a UTF-8 byte-order
+/// mark in front and blank lines are skipped, and with `strip_comments` what follows a '#' on a
+/// line (OFF).
 class TextLines {
  public:
-  TextLines(const std::string& text, bool strip_comments) : text_(text), strip_comments_(strip_comments) {}
+  TextLines(const std::string& text, bool strip_comments)
+      : text_(text), strip_comments_(strip_comments), pos_(text.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0) {}
 
   /// The next line with tokens, into `tokens` (cleared first); false at end of file.
   bool next(std::vector<std::string_view>& tokens) {
@@ -50,7 +55,7 @@ class TextLines {
  private:
   const std::string& text_;
   bool strip_comments_;
-  std::size_t pos_ = 0;
+  std::size_t pos_;
   int line_ = 0;
 };
 

@@ -31,7 +31,7 @@ float get_f32(const char* p) {
 }
 
 bool starts_with_solid(const std::string& bytes) {
-  std::size_t i = 0;
+  std::size_t i = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
   while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\r' || bytes[i] == '\n')) ++i;
   return bytes.compare(i, 5, "solid") == 0;
 }

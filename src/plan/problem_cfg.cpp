@@ -38,6 +38,7 @@ Result<Problem> load_cfg(const fs::path& file) {
   };
   while (std::getline(in, line)) {
     ++lineno;
+    if (lineno == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // a UTF-8 byte-order mark (Notepad's)
     auto hash = line.find_first_of("#;");
     if (hash != std::string::npos) line.erase(hash);
     line = trim(line);

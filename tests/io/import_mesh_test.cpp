@@ -372,6 +372,31 @@ TEST(ImportObj, ContinuedLinesReadAndCommentsAfterFacesNameTheLine) {
   expect_error(import_mesh(both), {both.string(), "line 5", "a comment after a face's vertices"});
 }
 
+// Text files saved as "UTF-8 with BOM" (Windows' Notepad): swept's readers skip the byte-order
+// mark (an ASCII STL was taken for a binary one "of 1818521189 triangles"); assimp's OBJ and PLY
+// readers cannot, and our check says so instead of assimp's "vertex index out of range".
+TEST(ImportText, Utf8ByteOrderMark) {
+  const auto dir = scratch_dir();
+  const std::string bom = "\xEF\xBB\xBF";
+  const auto stl = import_mesh(write_file(dir / "bom.stl", bom + kAsciiStl));
+  ASSERT_TRUE(stl.ok()) << stl.error().message;
+  EXPECT_EQ(stl->triangle_count(), 2u);
+  EXPECT_EQ(stl->parts.at(0).name, "plate");
+  const auto off = import_mesh(write_file(dir / "bom.off", bom + "OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n"));
+  ASSERT_TRUE(off.ok()) << off.error().message;
+  EXPECT_EQ(off->triangle_count(), 1u);
+  for (const char* name : {"bom.obj", "bom.ply"}) {
+    const std::string text = std::string(name) == "bom.obj"
+                                 ? "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"
+                                 : "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                   "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n";
+    const auto file = write_file(dir / name, bom + text);
+    expect_error(import_mesh(file), {file.string(), "starts with a UTF-8 byte-order mark", "without it"});
+    EXPECT_TRUE(import_mesh(write_file(dir / name, text)).ok()) << name;  // the same without the mark
+  }
+}
+
 // README: OBJ, PLY, glTF and COLLADA come through Debian's assimp in single precision (built
 // without ASSIMP_DOUBLE_PRECISION). If a later assimp keeps doubles, this fails and the README
 // should say so.

@@ -145,6 +145,12 @@ volume.max.z = 60
   ASSERT_TRUE(p) << p.error().message;
   ASSERT_TRUE(p->goal);
   EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->goal->rotation), 1.5707963267948966, 1e-12);
+  // Saved by Notepad as "UTF-8 with BOM": the byte-order mark before [problem] is not a line.
+  const auto bom = load_problem(write("bom.cfg", "\xEF\xBB\xBF[problem]\nrobot = peg.stl\nworld = block.stl\nstart.x = 0\n"
+                                                 "start.y = 0\nstart.z = -7.49\nstart.theta = 0\nstart.axis.x = 0\n"
+                                                 "start.axis.y = 0\nstart.axis.z = 1\ngoal.x = 0\ngoal.y = 0\ngoal.z = 40\n"
+                                                 "goal.theta = 0\ngoal.axis.x = 0\ngoal.axis.y = 0\ngoal.axis.z = 1\n"));
+  EXPECT_TRUE(bom) << bom.error().message;
   ASSERT_TRUE(p->bounds);
   EXPECT_DOUBLE_EQ(p->bounds->max.z(), 60);
   p->clearance = 0.002;
