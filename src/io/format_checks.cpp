@@ -78,10 +78,9 @@ std::string for_each_statement(const std::string& text, F&& f) {
     std::string_view line;
     bool commented = false;
     for (;;) {
-      std::size_t end = text.find('\n', pos);
-      if (end == std::string::npos) end = text.size();
+      const auto [end, next] = line_end(text, pos);
       std::string_view part(text.data() + pos, end - pos);
-      pos = end + 1;
+      pos = next;
       ++line_no;
       if (const std::size_t hash = part.find('#'); hash != std::string_view::npos) {
         part = part.substr(0, hash);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace swept::io_detail {
@@ -25,9 +26,17 @@ std::string quoted(std::string_view s);
 /// The UTF-8 byte-order mark some Windows editors put in front of a text file.
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
-/// The lines of a whole text split into tokens, with 1-based line numbers: a UTF-8 byte-order
-/// mark in front and blank lines are skipped, and with `strip_comments` what follows a '#' on a
-/// line (OFF).
+/// The end of the line that starts at `pos` (the position of its CR or LF, or text.size()), and
+/// where the next line starts: lines end in LF, CR LF or a lone CR (classic Mac OS).
+inline std::pair<std::size_t, std::size_t> line_end(std::string_view text, std::size_t pos) {
+  const std::size_t end = text.find_first_of("\r\n", pos);
+  if (end == std::string_view::npos) return {text.size(), text.size()};
+  return {end, end + (text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1)};
+}
+
+/// The lines of a whole text split into tokens, with 1-based line numbers (line_end's lines): a
+/// UTF-8 byte-order mark in front and blank lines are skipped, and with `strip_comments` what
+/// follows a '#' on a line (OFF).
 class TextLines {
  public:
   TextLines(const std::string& text, bool strip_comments)
@@ -37,10 +46,9 @@ class TextLines {
   bool next(std::vector<std::string_view>& tokens) {
     tokens.clear();
     while (pos_ < text_.size()) {
-      std::size_t end = text_.find('\n', pos_);
-      if (end == std::string::npos) end = text_.size();
+      const auto [end, next] = line_end(text_, pos_);
       std::string_view line(text_.data() + pos_, end - pos_);
-      pos_ = end + 1;
+      pos_ = next;
       ++line_;
       if (strip_comments_)
         if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);

@@ -30,10 +30,17 @@ float get_f32(const char* p) {
   return f;
 }
 
+// An ASCII STL keyword, in any case: the format writes them in lower case, some exporters in upper.
+bool is_keyword(std::string_view token, std::string_view keyword) {
+  return token.size() == keyword.size() &&
+         std::equal(token.begin(), token.end(), keyword.begin(),
+                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+}
+
 bool starts_with_solid(const std::string& bytes) {
   std::size_t i = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
   while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\r' || bytes[i] == '\n')) ++i;
-  return bytes.compare(i, 5, "solid") == 0;
+  return is_keyword(std::string_view(bytes).substr(i, 5), "solid");
 }
 
 // A binary STL may also start with "solid". Its float data nearly always holds NUL bytes, which
@@ -48,6 +55,18 @@ bool looks_binary(const std::string& bytes, bool size_matches) {
     high = high || c >= 0x80;
   }
   return high && size_matches;
+}
+
+// Text rather than binary: its first 512 bytes are all printable ASCII, whitespace or UTF-8
+// (a binary STL's floats after its 84-byte header hold other bytes).
+bool looks_like_text(const std::string& bytes) {
+  const std::size_t end = std::min<std::size_t>(bytes.size(), 512);
+  for (std::size_t i = 0; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(bytes[i]);
+    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t') return false;
+    if (c == 0x7f) return false;
+  }
+  return end > 0;
 }
 
 Result<bool> read_binary(const ReadContext& ctx, const std::string& bytes, std::vector<TriangleSoup>& parts) {
@@ -96,7 +115,8 @@ Result<bool> read_ascii(const ReadContext& ctx, const std::string& text, std::ve
     if (!lines.next(tok))
       return file_error(ctx.display, "unexpected end of file after line " + std::to_string(lines.line()) +
                                          ": expected '" + std::string(keyword) + "'");
-    if (tok[0] != keyword || (!after.empty() && (tok.size() < 2 || tok[1] != after)) || tok.size() < min_tokens) {
+    if (!is_keyword(tok[0], keyword) || (!after.empty() && (tok.size() < 2 || !is_keyword(tok[1], after))) ||
+        tok.size() < min_tokens) {
       std::string want(keyword);
       if (!after.empty()) {
         want.push_back(' ');
@@ -109,7 +129,7 @@ Result<bool> read_ascii(const ReadContext& ctx, const std::string& text, std::ve
 
   bool any_solid = false;
   while (lines.next(tok)) {
-    if (tok[0] != "solid") return at("expected 'solid', found " + quoted(tok[0]));
+    if (!is_keyword(tok[0], "solid")) return at("expected 'solid', found " + quoted(tok[0]));
     any_solid = true;
     TriangleSoup soup;
     for (std::size_t i = 1; i < tok.size(); ++i) {
@@ -119,18 +139,18 @@ Result<bool> read_ascii(const ReadContext& ctx, const std::string& text, std::ve
     if (soup.name.empty()) soup.name = ctx.file.stem().string();
     bool closed = false;
     while (lines.next(tok)) {
-      if (tok[0] == "endsolid") {
+      if (is_keyword(tok[0], "endsolid")) {
         closed = true;
         break;
       }
-      if (tok[0] != "facet") return at("expected 'facet' or 'endsolid', found " + quoted(tok[0]));
+      if (!is_keyword(tok[0], "facet")) return at("expected 'facet' or 'endsolid', found " + quoted(tok[0]));
       if (auto r = expect("outer", "loop", 2); !r) return r;
       Triangle t;
       for (int v = 0; v < 3; ++v) {
         if (!lines.next(tok))
           return file_error(ctx.display, "unexpected end of file after line " + std::to_string(lines.line()) +
                                              " inside facet " + std::to_string(soup.triangles.size()));
-        if (tok[0] != "vertex") return at("expected 'vertex', found " + quoted(tok[0]));
+        if (!is_keyword(tok[0], "vertex")) return at("expected 'vertex', found " + quoted(tok[0]));
         if (tok.size() != 4) return at("a vertex needs 3 coordinates, found " + std::to_string(tok.size() - 1));
         for (int k = 0; k < 3; ++k) {
           std::string_view s = tok[1 + k];
@@ -166,9 +186,16 @@ Result<bool> read_stl(const ReadContext& ctx, std::vector<TriangleSoup>& parts) 
   Result<std::string> bytes = read_file_bytes(ctx.file, ctx.display);
   if (!bytes) return bytes.error();
   const std::string& b = *bytes;
+  const bool size_matches = b.size() >= 84 && b.size() == 84 + 50 * std::uint64_t{get_u32(b.data() + 80)};
   if (starts_with_solid(b)) {
-    const bool size_matches = b.size() >= 84 && b.size() == 84 + 50 * std::uint64_t{get_u32(b.data() + 80)};
     if (!looks_binary(b, size_matches)) return read_ascii(ctx, b, parts);
+  } else if (!size_matches && looks_like_text(b)) {
+    // Not read as a binary header: its first bytes would make a count of billions of triangles.
+    std::vector<std::string_view> first;
+    TextLines lines(b, false);
+    lines.next(first);
+    return file_error(ctx.display, "line " + std::to_string(lines.line()) + ": text that is not an ASCII STL: it starts with " +
+                                       quoted(first.empty() ? std::string_view() : first[0]) + ", where an ASCII STL starts with 'solid'");
   }
   return read_binary(ctx, b, parts);
 }

@@ -397,6 +397,39 @@ TEST(ImportText, Utf8ByteOrderMark) {
   }
 }
 
+// Lines ending in a lone CR (classic Mac OS), which assimp reads: swept's STL and OFF readers
+// took the whole file for one line, and the OBJ check checked only its first statement.
+// Upper-case ASCII STL keywords (some exporters write them) are read too; text that is not an
+// ASCII STL is said to be so, where its first bytes were read as a binary header of billions of
+// triangles.
+TEST(ImportText, LineEndingsKeywordCaseAndTextThatIsNotStl) {
+  const auto dir = scratch_dir();
+  auto with_cr = [](std::string s) {
+    for (char& c : s)
+      if (c == '\n') c = '\r';
+    return s;
+  };
+  const auto stl = import_mesh(write_file(dir / "cr.stl", with_cr(kAsciiStl)));
+  ASSERT_TRUE(stl.ok()) << stl.error().message;
+  EXPECT_EQ(stl->triangle_count(), 2u);
+  const auto off = import_mesh(write_file(dir / "cr.off", with_cr("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")));
+  ASSERT_TRUE(off.ok()) << off.error().message;
+  EXPECT_EQ(off->triangle_count(), 2u);
+  const auto cut = write_file(dir / "cr_cut.off", with_cr("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 7\n"));
+  expect_error(import_mesh(cut), {cut.string(), "line 7", "refers to vertex 7 of 4"});  // lines counted at each CR
+  const auto mixed = write_file(dir / "mixed.obj", "v 0 0 0\r\nv 1 0 0\rv 1 1 0\nf 1 2 4\r\n");
+  expect_error(import_mesh(mixed), {mixed.string(), "line 4", "vertex 4 but 3 vertices"});
+
+  std::string upper = kAsciiStl;
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const auto shouted = import_mesh(write_file(dir / "upper.stl", upper));
+  ASSERT_TRUE(shouted.ok()) << shouted.error().message;
+  EXPECT_EQ(shouted->triangle_count(), 2u);
+
+  const auto text = write_file(dir / "text.stl", "facet normal 0 0 1\n  outer loop\n");
+  expect_error(import_mesh(text), {text.string(), "text that is not an ASCII STL", "starts with 'facet'"});
+}
+
 // README: OBJ, PLY, glTF and COLLADA come through Debian's assimp in single precision (built
 // without ASSIMP_DOUBLE_PRECISION). If a later assimp keeps doubles, this fails and the README
 // should say so.
