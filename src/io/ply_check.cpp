@@ -69,10 +69,9 @@ std::string check_ply(const std::string& bytes) {
   bool ended = false;
   while (!ended) {
     if (pos >= bytes.size()) return "unexpected end of file inside the header (no 'end_header')";
-    std::size_t end = bytes.find('\n', pos);
-    if (end == std::string::npos) end = bytes.size();
+    const auto [end, next] = line_end(bytes, pos);
     const auto tok = split(std::string_view(bytes.data() + pos, end - pos));
-    pos = end + 1;
+    pos = next;
     ++line_no;
     const std::string at = "line " + std::to_string(line_no) + ": ";
     if (line_no == 1) {
@@ -139,10 +138,9 @@ std::string check_ply(const std::string& bytes) {
           if (pos >= bytes.size())
             return "unexpected end of file: element '" + e.name + "' " + std::to_string(i) + " of " +
                    std::to_string(e.count) + " is missing";
-          std::size_t end = bytes.find('\n', pos);
-          if (end == std::string::npos) end = bytes.size();
+          const auto [end, next] = line_end(bytes, pos);
           tok = split(std::string_view(bytes.data() + pos, end - pos));
-          pos = end + 1;
+          pos = next;
           ++line_no;
         }
         const std::string at = "line " + std::to_string(line_no) + ": ";

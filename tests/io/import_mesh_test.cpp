@@ -417,6 +417,12 @@ TEST(ImportText, LineEndingsKeywordCaseAndTextThatIsNotStl) {
   EXPECT_EQ(off->triangle_count(), 2u);
   const auto cut = write_file(dir / "cr_cut.off", with_cr("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 7\n"));
   expect_error(import_mesh(cut), {cut.string(), "line 7", "refers to vertex 7 of 4"});  // lines counted at each CR
+  const auto ply = import_mesh(write_file(
+      dir / "cr.ply", with_cr("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n")));
+  ASSERT_TRUE(ply.ok()) << ply.error().message;  // the PLY check found no 'end_header'
+  EXPECT_EQ(ply->triangle_count(), 1u);
   const auto mixed = write_file(dir / "mixed.obj", "v 0 0 0\r\nv 1 0 0\rv 1 1 0\nf 1 2 4\r\n");
   expect_error(import_mesh(mixed), {mixed.string(), "line 4", "vertex 4 but 3 vertices"});
 
