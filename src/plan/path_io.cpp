@@ -14,6 +14,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 namespace swept {
 
@@ -107,13 +108,19 @@ Result<Path> read_path(const fs::path& file) {
   if (!in) return Error{file.string() + ": cannot open"};
   Path path;
   if (file.extension() == ".path") {
+    // A UTF-8 byte-order mark in front (a file saved by Notepad) is skipped.
+    char mark[3] = {};
+    in.read(mark, 3);
+    const std::streamoff start = in.gcount() == 3 && std::string_view(mark, 3) == "\xEF\xBB\xBF" ? 3 : 0;
+    in.clear();
+    in.seekg(start);
     // OMPL writes two forms: printAsMatrix() (a line of 7 numbers per state, ours too) and
     // print() (the states as printed); the first non-blank line tells which.
     std::string first;
     while (std::getline(in, first) && first.find_first_not_of(" \t\r") == std::string::npos) {
     }
     in.clear();
-    in.seekg(0);
+    in.seekg(start);
     const bool printed_states = first.find("Compound state") != std::string::npos;
     if (printed_states) {
       Result<Path> printed = read_ompl_printed_states(in, file.string());

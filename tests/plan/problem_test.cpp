@@ -540,6 +540,14 @@ TEST_F(ProblemFiles, OmplPrintedPathFilesAreRead) {
   auto matrix = read_path(write("matrix.path", "1 2 3 0 0 0 1\n4 5 6 0 0 0 1\n7 8 9 0 0 0 1\n"));
   ASSERT_TRUE(matrix) << matrix.error().message;
   EXPECT_EQ(matrix->poses.size(), 3u);
+  // Both forms saved with a UTF-8 byte-order mark (Notepad's "UTF-8 with BOM") read the same.
+  const auto marked_matrix = read_path(write("bom.path", "\xEF\xBB\xBF" "1 2 3 0 0 0 1\n4 5 6 0 0 0 1\n7 8 9 0 0 0 1\n"));
+  ASSERT_TRUE(marked_matrix) << marked_matrix.error().message;
+  EXPECT_EQ(marked_matrix->poses.size(), 3u);
+  EXPECT_EQ(marked_matrix->poses[0].translation, Vec3(1, 2, 3));
+  const auto marked_printed = read_path(write("bom_printed.path", "\xEF\xBB\xBF" + two));
+  ASSERT_TRUE(marked_printed) << marked_printed.error().message;
+  EXPECT_EQ(marked_printed->poses.size(), path->poses.size());
 
   // Broken states name the file and line.
   expect_path_error(read_path(write("cut.path", "Compound state [\nRealVectorState [1 2 3]\n")),
