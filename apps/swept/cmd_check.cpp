@@ -91,10 +91,7 @@ void run(const CheckCliOptions& o) {
     nlohmann::json segments = nlohmann::json::array();
     for (const SegmentCheck& s : r.segments) {
       nlohmann::json j{{"certified", s.certified}, {"min_distance", s.min_distance}, {"t_min", s.t_min}};
-      if (s.escape) {
-        j["escape"] = true;
-        j["min_distance_other_pairs"] = s.min_distance_other_pairs;
-      }
+      if (s.in_contact) j["in_contact"] = true;
       if (!s.certified) j["blocked"] = {{"t", s.t_blocked}, {"distance", s.distance_at_block}};
       segments.push_back(std::move(j));
     }
@@ -107,7 +104,7 @@ void run(const CheckCliOptions& o) {
                        {"min_clearance", r.min_clearance},
                        {"min_at", {{"segment", r.min_segment}, {"t", r.min_t}, {"pose", pose_json(r.min_pose)}}},
                        {"first_invalid", nullptr},
-                       {"escape", nullptr},
+                       {"contact_segments", r.contact_segments},
                        {"segments", segments},
                        {"warnings", scene->warnings},
                        {"distance_queries", r.distance_queries},
@@ -120,10 +117,6 @@ void run(const CheckCliOptions& o) {
                               {"colliding", r.first_bad_distance <= 0.0},
                               {"pose", pose_json(r.first_bad_pose)}};
     }
-    if (r.escape_segments > 0)
-      doc["escape"] = {{"segments", r.escape_segments},
-                       {"exempt_pairs", r.exempt_pairs},
-                       {"min_clearance_other_pairs", r.escape_clearance}};
     std::cout << json_text(doc, 2) << "\n";
   } else {
     std::cout << std::setprecision(6) << "problem      " << o.problem << "\n"
@@ -133,10 +126,10 @@ void run(const CheckCliOptions& o) {
               << "result       " << r.message << "\n"
               << "clearance    min " << r.min_clearance << " " << problem->unit << " (required " << r.clearance
               << ") in segment " << r.min_segment << " at t = " << r.min_t << "\n";
-    if (r.escape_segments > 0)
-      std::cout << "escape       first segment: " << r.exempt_pairs
-                << " triangle pairs in contact at the start exempt, every other pair min " << r.escape_clearance << " "
-                << problem->unit << "\n";
+    if (r.contact_segments > 0)
+      std::cout << "contact      " << r.contact_segments << (r.contact_segments == 1 ? " segment" : " segments")
+                << " with an end in contact, certified as pulls by the mate rule (tolerance " << problem->contact_tolerance
+                << " " << problem->unit << ")\n";
     if (r.first_bad_segment)
       std::cout << "first bad    segment " << *r.first_bad_segment << ": distance " << r.first_bad_distance
                 << (r.first_bad_distance <= 0.0 ? " (in collision)" : "") << " at " << pose_text(r.first_bad_pose)

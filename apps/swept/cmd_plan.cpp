@@ -98,11 +98,10 @@ void run(const PlanCliOptions& o) {
         {"translation_length", r.translation_length},
         {"rotation_length_rad", r.rotation_length},
         {"min_clearance", r.solved() ? nlohmann::json(r.min_clearance) : nlohmann::json(nullptr)},
-        {"escape", r.solved() && r.escape_segments > 0
-                       ? nlohmann::json{{"segments", r.escape_segments},
-                                        {"exempt_pairs", r.exempt_pairs},
-                                        {"min_clearance_other_pairs", r.escape_clearance}}
-                       : nlohmann::json(nullptr)},
+        {"escape", r.solved() && r.escape_segments > 0 ? nlohmann::json{{"segments", r.escape_segments}}
+                                                       : nlohmann::json(nullptr)},
+        {"approach", r.solved() && r.approach_segments > 0 ? nlohmann::json{{"segments", r.approach_segments}}
+                                                           : nlohmann::json(nullptr)},
         {"time_ms", {{"build", r.time_ms.build}, {"search", r.time_ms.search}, {"smooth", r.time_ms.smooth}, {"total", r.time_ms.total},
                      {"cpu", cpu}}},
         {"queries", {{"distance", r.queries.distance}, {"proximity", r.queries.proximity}, {"sweep", r.queries.sweep}}},
@@ -130,11 +129,15 @@ void run(const PlanCliOptions& o) {
                 << r.path_length << " " << problem->unit << " (translation " << r.translation_length << " "
                 << problem->unit << ", rotation " << r.rotation_length * 180.0 / 3.14159265358979323846 << " deg)\n"
                 << "clearance    min " << r.min_clearance << " " << problem->unit << " (required " << problem->clearance
-                << (r.escape_segments > 0 ? "; the start is in contact" : "") << ")\n";
+                << (r.escape_segments > 0 ? "; the start is in contact" : "")
+                << (r.approach_segments > 0 ? "; the goal is in contact" : "") << ")\n";
+      auto pulls = [](std::size_t n) { return n == 1 ? "one straight pull" : "a slide, then a straight pull"; };
       if (r.escape_segments > 0)
-        std::cout << "escape       first segment: " << r.exempt_pairs
-                  << " triangle pairs in contact at the start exempt, every other pair min " << r.escape_clearance
-                  << " " << problem->unit << "\n";
+        std::cout << "escape       " << pulls(r.escape_segments) << " out of contact, certified by the mate rule (tolerance "
+                  << problem->contact_tolerance << " " << problem->unit << ")\n";
+      if (r.approach_segments > 0)
+        std::cout << "approach     " << pulls(r.approach_segments) << " into contact, played backwards, certified by the mate rule (tolerance "
+                  << problem->contact_tolerance << " " << problem->unit << ")\n";
       std::cout << "path hash    " << hex(r.path_hash) << (problem->seed != 0 ? " (seed " + std::to_string(problem->seed) + ")" : "")
                 << "\n";
       if (!o.output.empty()) std::cout << "written      " << o.output << "\n";

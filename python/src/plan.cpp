@@ -132,15 +132,14 @@ pyb::dict plan_py(const PyProblem& p_in, std::optional<double> time_limit, std::
   d["translation_length"] = r.translation_length;
   d["rotation_length_rad"] = r.rotation_length;
   d["min_clearance"] = r.solved() ? pyb::object(pyb::float_(r.min_clearance)) : pyb::object(pyb::none());
-  if (r.solved() && r.escape_segments > 0) {
+  auto segments = [&](std::size_t n) -> pyb::object {
+    if (!r.solved() || n == 0) return pyb::none();
     pyb::dict e;
-    e["segments"] = r.escape_segments;
-    e["exempt_pairs"] = r.exempt_pairs;
-    e["min_clearance_other_pairs"] = r.escape_clearance;
-    d["escape"] = e;
-  } else {
-    d["escape"] = pyb::none();
-  }
+    e["segments"] = n;
+    return std::move(e);
+  };
+  d["escape"] = segments(r.escape_segments);
+  d["approach"] = segments(r.approach_segments);
   pyb::dict t;
   t["build"] = r.time_ms.build, t["search"] = r.time_ms.search, t["smooth"] = r.time_ms.smooth, t["total"] = r.time_ms.total;
   d["time_ms"] = t;

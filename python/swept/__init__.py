@@ -101,7 +101,8 @@ class PlanResult(NamedTuple):
     translation_length: float
     rotation_length_rad: float
     min_clearance: Optional[float]  #: None when not solved
-    escape: Optional[dict]      #: after a start in contact: segments, exempt_pairs, min_clearance_other_pairs
+    escape: Optional[dict]      #: a start in contact: {"segments": 1 or 2} pulls out, by the mate rule
+    approach: Optional[dict]    #: a goal in contact: {"segments": 1 or 2} pulls in, by the mate rule
     time_ms: dict               #: build, search, smooth, total
     queries: dict               #: distance, tolerance, collide
     path_hash: str              #: 16 hex digits, as `swept plan` prints

@@ -1,6 +1,7 @@
 // The disassembly sequence (disassemble.h; docs/assembly.md): rounds of straight pulls, the
 // planner as fallback, subassemblies, and the blocking graph of what stays.
-#include "parts.h"
+#include "bodies.h"
+#include "swept/assembly/disassemble.h"
 
 #include "swept/plan/planner.h"
 
@@ -16,8 +17,8 @@
 namespace swept {
 namespace {
 
-using assembly_detail::Body;
-using assembly_detail::PullSettings;
+using contact::Body;
+using contact::PullSettings;
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
@@ -118,9 +119,9 @@ class Sequencer {
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
   /// contacts_[i][j]: the triangles of the contact of part j (the obstacle) with movable part i at
-  /// the mounted poses (assembly_detail::contact_facets), for pull_directions, which asks for
+  /// the mounted poses (contact::contact_facets), for pull_directions, which asks for
   /// them in every round.
-  std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> contacts_;
+  std::vector<std::vector<std::vector<contact::ContactFacet>>> contacts_;
   std::atomic<std::uint64_t> queries_{0};
   /// Pulls found blocked, per part: the direction, the length and the part that blocks it on its
   /// own. Removing other parts cannot clear it (the same pull meets the same pose), so while that
@@ -162,7 +163,7 @@ class Sequencer {
     std::vector<char> near(pairs.size(), 0);
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
       const auto [i, j] = pairs[k];
-      const DistanceResult d = distance(bodies_[i].tree, Pose{}, bodies_[j].tree, Pose{}, {.enough = threshold});
+      const DistanceResult d = distance(*bodies_[i].tree, bodies_[i].pose, *bodies_[j].tree, bodies_[j].pose, {.enough = threshold});
       near[k] = d.distance < threshold;
     });
     for (std::size_t k = 0; k < pairs.size(); ++k)
@@ -172,28 +173,28 @@ class Sequencer {
 
   // The contact facets pull_directions needs, once: for every movable part and every other part
   // whose box comes within clearance + tolerance of its box, in parallel.
-  std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> find_contacts(
+  std::vector<std::vector<std::vector<contact::ContactFacet>>> find_contacts(
       const std::vector<bool>& is_fixed) const {
     const std::size_t n = bodies_.size();
     const double threshold = settings_.clearance + settings_.tolerance;
-    std::vector<std::vector<std::vector<assembly_detail::ContactFacet>>> out(
-        n, std::vector<std::vector<assembly_detail::ContactFacet>>(n));
+    std::vector<std::vector<std::vector<contact::ContactFacet>>> out(
+        n, std::vector<std::vector<contact::ContactFacet>>(n));
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j)
-        if (i != j && !is_fixed[i] && assembly_detail::box_gap(bodies_[j].box, bodies_[i].box) <= threshold)
+        if (i != j && !is_fixed[i] && contact::box_gap(bodies_[j].box, bodies_[i].box) <= threshold)
           pairs.push_back({i, j});
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
       const auto [i, j] = pairs[k];
       const ProximityResult near =
-          proximity_pairs(bodies_[j].tree, Pose{}, bodies_[i].tree, Pose{}, {.threshold = threshold});
-      out[i][j] = assembly_detail::contact_facets(near.pairs, bodies_[j].triangles.size(), bodies_[i].triangles.size());
+          proximity_pairs(*bodies_[j].tree, bodies_[j].pose, *bodies_[i].tree, bodies_[i].pose, {.threshold = threshold});
+      out[i][j] = contact::contact_facets(near.pairs, bodies_[j].triangles.size(), bodies_[i].triangles.size());
     });
     return out;
   }
 
   // The known contact facets of a single part, for pull_directions.
-  std::function<const std::vector<assembly_detail::ContactFacet>*(const Body&)> known_contacts(std::size_t part) const {
+  std::function<const std::vector<contact::ContactFacet>*(const Body&)> known_contacts(std::size_t part) const {
     return [this, part](const Body& o) { return &contacts_[part][static_cast<std::size_t>(&o - bodies_.data())]; };
   }
 
@@ -238,9 +239,9 @@ class Sequencer {
                     const std::vector<std::size_t>& remaining) {
     Attempt at;
     const double threshold = settings_.clearance + settings_.tolerance;
-    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold,
+    for (const Vec3& d : contact::pull_directions(moving, obstacles, threshold,
                                                           part ? known_contacts(*part) : nullptr)) {
-      const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
+      const double length = contact::exit_length(moving, obstacles, d, exit_margin());
       if (part) {
         bool known = false;
         for (const BlockedPull& b : blocked_pulls_[*part])
@@ -249,7 +250,7 @@ class Sequencer {
         if (known) continue;
       }
       const Body* blocker = nullptr;
-      if (!assembly_detail::pull_is_clear(moving, obstacles, d, length, settings_, queries_, &blocker)) {
+      if (!contact::pull_is_clear(moving, obstacles, d, length, settings_, queries_, &blocker)) {
         if (part && blocker) blocked_pulls_[*part].push_back({d, length, static_cast<std::size_t>(blocker - bodies_.data())});
         continue;
       }
@@ -333,11 +334,11 @@ class Sequencer {
     const std::vector<const Body*> obstacles = others({part}, remaining);
     const Body& moving = bodies_[part];
     const double threshold = settings_.clearance + settings_.tolerance;
-    for (const Vec3& d : assembly_detail::pull_directions(moving, obstacles, threshold, known_contacts(part))) {
-      const double length = assembly_detail::exit_length(moving, obstacles, d, exit_margin());
+    for (const Vec3& d : contact::pull_directions(moving, obstacles, threshold, known_contacts(part))) {
+      const double length = contact::exit_length(moving, obstacles, d, exit_margin());
       SequenceStep::Blocking b{d, {}};
       for (std::size_t i : remaining)
-        if (i != part && !assembly_detail::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_))
+        if (i != part && !contact::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_))
           b.blockers.push_back(i);
       s.blocking.push_back(std::move(b));
     }

@@ -1,6 +1,7 @@
 // Interferences at the mounted poses (disassemble.h): parts that overlap by more than the mating
 // tolerance, found before any part is moved.
-#include "parts.h"
+#include "bodies.h"
+#include "swept/assembly/disassemble.h"
 
 #include "swept/geometry/distance.h"
 
@@ -14,7 +15,7 @@ namespace swept {
 
 std::vector<Interference> find_interferences(const Assembly& assembly, double tolerance) {
   const std::size_t n = assembly.parts.size();
-  std::vector<assembly_detail::Body> bodies(n);
+  std::vector<contact::Body> bodies(n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies[i] = assembly_detail::make_body(assembly, {i}, {}); });
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < n; ++i)
@@ -26,20 +27,20 @@ std::vector<Interference> find_interferences(const Assembly& assembly, double to
   std::vector<std::optional<Interference>> found(pairs.size());
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
     const auto [i, j] = pairs[k];
-    const assembly_detail::Body& a = bodies[i];
-    const assembly_detail::Body& b = bodies[j];
-    const CollideResult c = collide(a.tree, Pose{}, b.tree, Pose{}, {.all_contacts = true});
+    const contact::Body& a = bodies[i];
+    const contact::Body& b = bodies[j];
+    const CollideResult c = collide(*a.tree, a.pose, *b.tree, b.pose, {.all_contacts = true});
     Interference f{i, j};
     Aabb where;
     // A shaft in its bore: the CAD's cylinders, not their facets, tell whether they cross.
-    const auto cylinders = assembly_detail::cylinder_mates(a, b, Vec3::UnitZ(), 0.0, tolerance);
+    const auto cylinders = contact::cylinder_mates(a, b, Vec3::UnitZ(), 0.0, tolerance);
     for (const ContactPair& p : c.contacts) {
       const Triangle& ta = a.triangles[p.triangle_a];
       const Triangle& tb = b.triangles[p.triangle_b];
       const double overlap = pair_overlap(ta, a.planes[p.triangle_a], tb, b.planes[p.triangle_b]);
       if (!(overlap > tolerance) || !std::isfinite(overlap)) continue;  // degenerate pairs have no depth
       if (!cylinders.empty() &&
-          assembly_detail::cylinder_mate_allows(cylinders, a, p.triangle_a, b, p.triangle_b, tolerance))
+          contact::cylinder_mate_allows(cylinders, a, p.triangle_a, b, p.triangle_b, tolerance))
         continue;
       ++f.triangle_pairs;
       f.depth = std::max(f.depth, overlap);

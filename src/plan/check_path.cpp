@@ -1,10 +1,11 @@
 // The final certification of a path (the planner's last phase, and `swept check`): every
 // segment certified with the planner's certificate (checker.h, over the query layer's
-// `certify_motion`), the smallest exact distance found along it, and the start-contact
-// exemption applied pair by pair (docs/planner.md).
+// `certify_motion`), or, with an end in contact, by the contact layer's pull certificate
+// (contact_moves.h), and the smallest exact distance found along it (docs/planner.md).
 #include "swept/plan/check.h"
 
 #include "checker.h"
+#include "contact_moves.h"
 
 #include <tbb/parallel_for.h>
 
@@ -25,15 +26,15 @@ struct Minimum {
 // The smallest exact distance along a segment (pose_at(t), t in [0, 1]) with exact end values
 // `d0`, `d1`: 15 samples in between, then a golden-section search around the smallest. A sample
 // only matters when it is below the smallest so far, so its query stops as soon as it proves it
-// is not (`below` gives +∞ then). `relaxed`: with the exempt pairs left out.
+// is not (`below` gives +∞ then).
 template <class PoseAt>
-Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, double d1, bool relaxed) {
+Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, double d1) {
   constexpr int kSamples = 16;
   int best = 0;
   Minimum m{d0, 0.0};
   for (int k = 1; k < kSamples; ++k) {
     const double t = static_cast<double>(k) / kSamples;
-    const double d = check.below(pose_at(t), m.value, relaxed);
+    const double d = check.below(pose_at(t), m.value);
     if (d < m.value) m = {d, t}, best = k;
   }
   if (d1 < m.value) m = {d1, 1.0}, best = kSamples;
@@ -43,10 +44,10 @@ Minimum sampled_minimum(const Checker& check, const PoseAt& pose_at, double d0, 
   double lo = std::max(0.0, (best - 1.0) / kSamples), hi = std::min(1.0, (best + 1.0) / kSamples);
   const double g = (std::sqrt(5.0) - 1.0) / 2.0;
   double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-  double f1 = check.exact(pose_at(x1), relaxed), f2 = check.below(pose_at(x2), f1, relaxed);
+  double f1 = check.exact(pose_at(x1)), f2 = check.below(pose_at(x2), f1);
   for (int it = 0; it < 24; ++it) {
-    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check.below(pose_at(x1), f2, relaxed);
-    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check.below(pose_at(x2), f1, relaxed);
+    if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = check.below(pose_at(x1), f2);
+    else lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = check.below(pose_at(x2), f1);
   }
   if (f1 < m.value) m = {f1, x1};
   if (f2 < m.value) m = {f2, x2};
@@ -73,17 +74,13 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
 
   std::vector<double> at_waypoint(poses.size());
   tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t w) { at_waypoint[w] = check.exact(poses[w]); });
-  // A start in contact: the first segment is the escape (docs/planner.md, "Starting in contact").
+  // A segment with an end in contact is a pull, certified by the contact model from that end
+  // (docs/planner.md, "The contact model").
   const std::size_t segments = poses.size() - 1;
-  bool escape = false;
-  if (segments > 0 && at_waypoint[0] <= margin && problem.contact_tolerance > 0.0) {
-    escape = true;
-    out.escape_segments = 1;
-    check.set_exempt(proximity_pairs(scene.obstacle_tree, Pose{}, scene.body_tree, poses[0],
-                                        {.threshold = margin + problem.contact_tolerance})
-                            .pairs);
-    out.exempt_pairs = check.exempt().size();
-  }
+  const bool contact_allowed = problem.contact_tolerance > 0.0;
+  std::optional<detail::ContactMoves> contact;
+  for (std::size_t i = 0; i < segments && contact_allowed && !contact; ++i)
+    if (at_waypoint[i] <= margin || at_waypoint[i + 1] <= margin) contact.emplace(scene, margin, problem.contact_tolerance);
 
   out.segments.resize(segments);
   tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
@@ -92,28 +89,24 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     // Where the certificate stopped: the parameter and the distance found there (≤ the
     // margin), or t = −1 when it gave up (query cap, parameter resolution).
     double t_blocked = -1.0, distance_at_block = 0.0;
-    auto certify = [&](double da, double db, bool relaxed) {
-      const Certificate c = check.certify(poses[i], da, poses[i + 1], db, relaxed, kMaxCertificateQueries,
-                                          detail::Pieces::two_earliest);
-      if (c.status == MotionStatus::blocked) t_blocked = c.t_blocked, distance_at_block = c.distance_at_block;
-      return c.clear();
-    };
-    if (escape && i == 0) {
-      sc.escape = true;
-      // An escape is a pure translation; its end must have the full clearance.
-      const bool translation = rotation_angle(poses[0].rotation, poses[1].rotation) <= 1e-12;
-      sc.certified = translation && at_waypoint[1] > margin && certify(-1, -1, /*relaxed=*/true);
-      if (!translation) t_blocked = 0.0, distance_at_block = at_waypoint[0];
-      else if (!(at_waypoint[1] > margin)) t_blocked = 1.0, distance_at_block = at_waypoint[1];
-      const Minimum other =
-          sampled_minimum(check, pose_at, check.exact(poses[0], true), check.exact(poses[1], true), true);
-      sc.min_distance_other_pairs = other.value;
+    if (contact && (at_waypoint[i] <= margin || at_waypoint[i + 1] <= margin)) {
+      sc.in_contact = true;
+      const bool translation = rotation_angle(poses[i].rotation, poses[i + 1].rotation) <= 1e-12;
+      const bool from_start = at_waypoint[i] <= margin;
+      const Pose& at = from_start ? poses[i] : poses[i + 1];
+      const Vec3 move = (from_start ? 1.0 : -1.0) * (poses[i + 1].translation - poses[i].translation);
+      const double length = move.norm();
+      sc.certified = translation && (length == 0.0 || contact->pull_clear(contact->body_at(at), move / length, length));
+      if (!sc.certified) t_blocked = from_start ? 0.0 : 1.0, distance_at_block = from_start ? at_waypoint[i] : at_waypoint[i + 1];
     } else {
       // The waypoints' exact distances are the certificate's end bounds.
-      sc.certified = certify(at_waypoint[i], at_waypoint[i + 1], false);
+      const Certificate c = check.certify(poses[i], at_waypoint[i], poses[i + 1], at_waypoint[i + 1], kMaxCertificateQueries,
+                                          detail::Pieces::two_earliest);
+      if (c.status == MotionStatus::blocked) t_blocked = c.t_blocked, distance_at_block = c.distance_at_block;
+      sc.certified = c.clear();
     }
     // The smallest distance along the segment, reported beside the certificate's verdict.
-    const Minimum m = sampled_minimum(check, pose_at, at_waypoint[i], at_waypoint[i + 1], false);
+    const Minimum m = sampled_minimum(check, pose_at, at_waypoint[i], at_waypoint[i + 1]);
     sc.min_distance = m.value;
     sc.t_min = m.t;
     if (!sc.certified) {
@@ -144,7 +137,7 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
       out.min_t = sc.t_min;
       out.min_pose = pose_on(i, sc.t_min);
     }
-    out.escape_clearance = std::min(out.escape_clearance, sc.min_distance_other_pairs);
+    if (sc.in_contact) ++out.contact_segments;
     if (!sc.certified && !out.first_bad_segment) {
       out.first_bad_segment = i;
       const double t = std::max(sc.t_blocked, 0.0);
@@ -153,7 +146,7 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     }
   }
   out.distance_queries = check.distance_queries();
-  out.sweeps = check.sweeps();
+  out.sweeps = check.sweeps() + (contact ? contact->sweeps() : 0);
   std::ostringstream os;
   if (inside) {
     out.valid = false;
@@ -173,13 +166,18 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     out.valid = true;
     if (segments == 1) os << "valid: the one segment keeps the clearance " << margin;
     else os << "valid: every one of the " << segments << " segments keeps the clearance " << margin;
-    if (escape) os << " (the first, an escape from contact, with " << out.exempt_pairs << " triangle pairs exempt)";
+    if (out.contact_segments > 0)
+      os << " (" << out.contact_segments << (out.contact_segments == 1 ? " segment" : " segments")
+         << " in contact certified as pulls by the mate rule, tolerance " << problem.contact_tolerance << ")";
   } else {
     const std::size_t i = *out.first_bad_segment;
     const SegmentCheck& sc = out.segments[i];
     os << "not valid: segment " << i << " (waypoint " << i << " to " << i + 1 << ") ";
-    if (sc.escape && rotation_angle(poses[0].rotation, poses[1].rotation) > 1e-12)
-      os << "is an escape from contact but rotates (an escape must be a pure translation)";
+    if (sc.in_contact && rotation_angle(poses[i].rotation, poses[i + 1].rotation) > 1e-12)
+      os << "has an end in contact but rotates (a motion in contact must be a pure translation)";
+    else if (sc.in_contact)
+      os << "has an end in contact and is not a pull the mate rule allows (tolerance " << problem.contact_tolerance
+         << "): a pair that is no mate comes within the clearance " << margin << ", or a mate reaches deeper than the tolerance";
     else if (sc.t_blocked < 0.0)
       os << "could not be certified within the query cap (it grazes the clearance)";
     else if (sc.distance_at_block <= 0.0)

@@ -8,31 +8,31 @@
 
 namespace swept::detail {
 
-DistanceResult Checker::query(const Pose& pose, double enough, bool relaxed, DistanceHint hint, bool decide,
+DistanceResult Checker::query(const Pose& pose, double enough, DistanceHint hint, bool decide,
                               std::span<const DistanceHint> suspects) const {
   ++distance_queries_;
-  const DistanceRequest request{.enough = enough, .exclude = relaxed ? &exempt_ : nullptr, .hint = hint,
+  const DistanceRequest request{.enough = enough, .hint = hint,
                                 .stop_below = decide && decide_blocked_ ? margin_ : -std::numeric_limits<double>::infinity(),
                                 .suspects = suspects};
   return distance(scene_.obstacle_tree, Pose{}, scene_.body_tree, pose, request);
 }
 
 DistanceResult Checker::measure(const Pose& pose, double enough, Suspects* suspects) const {
-  if (!suspects) return query(pose, enough, false);
-  const DistanceResult r = query(pose, enough, false, {}, true, suspects->pairs);
+  if (!suspects) return query(pose, enough);
+  const DistanceResult r = query(pose, enough, {}, true, suspects->pairs);
   suspects->add(r.hint);
   return r;
 }
 
-double Checker::clearance(const Pose& pose, double enough, bool relaxed) const {
-  return query(pose, enough, relaxed).distance;
+double Checker::clearance(const Pose& pose, double enough) const {
+  return query(pose, enough).distance;
 }
 
 bool Checker::free(const Pose& pose) const {
   // Exact below the next double above the margin, a lower bound at or above it otherwise: either
   // way "above the margin" is decided.
   const double above = std::nextafter(margin_, std::numeric_limits<double>::infinity());
-  return query(pose, above, false).distance > margin_;
+  return query(pose, above).distance > margin_;
 }
 
 bool Checker::blocked_at_samples(const Pose& a, const Pose& b) const {
@@ -43,21 +43,20 @@ bool Checker::blocked_at_samples(const Pose& a, const Pose& b) const {
 }
 
 DistanceResult Checker::nearest(const Pose& pose, double enough) const {
-  return query(pose, enough, false, {}, false);
+  return query(pose, enough, {}, false);
 }
 
-double Checker::below(const Pose& pose, double bound, bool relaxed) const {
-  const DistanceResult d = query(pose, bound, relaxed, {}, false);
+double Checker::below(const Pose& pose, double bound) const {
+  const DistanceResult d = query(pose, bound, {}, false);
   return d.exact ? d.distance : std::numeric_limits<double>::infinity();
 }
 
-Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, bool relaxed,
-                             int max_queries, Pieces pieces, std::array<const std::atomic<bool>*, 2> cancel) const {
+Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db, int max_queries, Pieces pieces, std::array<const std::atomic<bool>*, 2> cancel) const {
   // Coherence: each query of the certificate starts from the previous one's closest pair on
   // its lane.
   std::array<DistanceHint, 2> hints;
   auto bound = [&](const Pose& pose, double enough, int lane) {
-    const DistanceResult d = query(pose, enough, relaxed, hints[lane]);
+    const DistanceResult d = query(pose, enough, hints[lane]);
     if (d.hint.valid()) hints[lane] = d.hint;
     return d.distance;
   };
@@ -70,17 +69,13 @@ Certificate Checker::certify(const Pose& a, double da, const Pose& b, double db,
   // (it stops at a blocked end or decides a free motion in a few queries), and a blocked
   // translation goes on with it, for where it is blocked. A motion that turns by a hair (its
   // ends' rotations differ by rounding) is swept with the margin raised by how far the turn
-  // strays (`as_translation`). An escape (relaxed) leaves out the same exempt pairs in the
-  // sweep as in its distances.
+  // strays (`as_translation`).
   const Motion m = motion(a, b);
   if (max_queries > kSweepAfter) {
     options.decide_after = kSweepAfter;
     options.decide = [&](double smallest) {
-      const std::function<bool(std::uint32_t, std::uint32_t)> exempt = [this](std::uint32_t o, std::uint32_t t) {
-        return exempt_.contains(o, t);
-      };
       const std::optional<SweepResult> s =
-          sweep_as_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, m, margin_, smallest, relaxed ? &exempt : nullptr);
+          sweep_as_translation(scene_.obstacle_tree, Pose{}, scene_.body_tree, m, margin_, smallest);
       if (!s) return false;  // turns too far to be swept
       ++sweeps_;
       return s->clear;

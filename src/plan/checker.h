@@ -1,8 +1,9 @@
 #pragma once
 // The planner's view of the certificate (internal to src/plan): distance bounds of the body
 // against the obstacles and the certificate of a straight motion (`certify_motion`, the query
-// layer's one certificate), with query counters, the query cap, a deadline and the contact
-// exemption of an escape. Used by every phase of the search and by `check_path`.
+// layer's one certificate), with query counters, the query cap and a deadline. Every pair of
+// triangles counts: a motion with an end in contact is certified by the contact layer
+// (contact.h), never here. Used by every phase of the search and by `check_path`.
 #include "swept/plan/planner.h"
 #include "swept/query/motion.h"
 #include "swept/query/query.h"
@@ -44,10 +45,8 @@ enum class Pieces {
                         ///< likely blocked near its end, as a bridge round a failed edge
 };
 
-// Distance bounds and motion certificates against the obstacles, with query counters. In
-// `relaxed` mode (the escape from a start in contact) the triangle pairs that were closer than
-// clearance + contact tolerance at the start are left out, pair by pair; every other pair of
-// triangles is checked. The const queries are safe to run from many threads at once.
+// Distance bounds and motion certificates against the obstacles, with query counters. The const
+// queries are safe to run from many threads at once.
 class Checker {
  public:
   /// Motions interpolate about the scene's reference point.
@@ -57,12 +56,8 @@ class Checker {
   Checker(const PlanScene& scene, double margin, const Vec3& reference)
       : scene_(scene), margin_(margin), reference_(reference), radius_(motion_radius(scene.body_tree, reference)) {}
 
-  /// The pairs (obstacle triangle, body triangle) that relaxed queries leave out.
-  void set_exempt(TrianglePairs pairs) { exempt_ = std::move(pairs); }
-  const TrianglePairs& exempt() const { return exempt_; }
-
   /// A lower bound on the distance at `pose`, exact below `enough`.
-  double clearance(const Pose& pose, double enough, bool relaxed = false) const;
+  double clearance(const Pose& pose, double enough) const;
   /// The same query with its result: when exact (and above the margin), its witness points
   /// are the closest pair.
   /// With `suspects` (the pairs that blocked, or were closest at, the poses a search step tried
@@ -75,13 +70,13 @@ class Checker {
   /// pair left is proved farther than the margin (nothing else is asked of it).
   bool free(const Pose& pose) const;
   /// Exact distance at `pose`, or +∞ once the query has proved it is not below `bound`.
-  double below(const Pose& pose, double bound, bool relaxed = false) const;
+  double below(const Pose& pose, double bound) const;
   /// The distance at `pose`, known free (a tree node), with its witness points (world), exact
   /// below `enough` (counted).
   DistanceResult nearest(const Pose& pose, double enough) const;
   /// Exact distance at `pose` (for reporting clearance).
-  double exact(const Pose& pose, bool relaxed = false) const {
-    return below(pose, std::numeric_limits<double>::infinity(), relaxed);
+  double exact(const Pose& pose) const {
+    return below(pose, std::numeric_limits<double>::infinity());
   }
 
   /// The straight motion a → b about the checker's reference point.
@@ -99,7 +94,7 @@ class Checker {
   /// is the default one; a lower `max_queries` is a caller's
   /// "not worth more than this" (smoothing's shortcuts), not a limit of the planner.
   /// `pieces`: how the midpoints are asked (Pieces). `cancel`: CertificateOptions::cancel.
-  Certificate certify(const Pose& a, double da, const Pose& b, double db, bool relaxed = false,
+  Certificate certify(const Pose& a, double da, const Pose& b, double db,
                       int max_queries = kMaxCertificateQueries, Pieces pieces = Pieces::one,
                       std::array<const std::atomic<bool>*, 2> cancel = {}) const;
   /// A cheap refusal before a long motion's certificate: true when one of the poses at
@@ -111,8 +106,8 @@ class Checker {
   /// the motion's length.
   bool blocked_at_samples(const Pose& a, const Pose& b) const;
   /// Certified clear?
-  bool clear(const Pose& a, double da, const Pose& b, double db, bool relaxed = false) const {
-    return certify(a, da, b, db, relaxed).clear();
+  bool clear(const Pose& a, double da, const Pose& b, double db) const {
+    return certify(a, da, b, db).clear();
   }
 
   double margin() const { return margin_; }
@@ -137,16 +132,15 @@ class Checker {
   std::uint64_t cap_refusals() const { return cap_refusals_.load(); }
 
  private:
-  /// One counted distance query against the obstacles (relaxed: the exempt pairs left out;
-  /// `decide`: a blocked pose is decided, not measured, while set_decide_blocked is on).
-  DistanceResult query(const Pose& pose, double enough, bool relaxed, DistanceHint hint = {}, bool decide = true,
+  /// One counted distance query against the obstacles (`decide`: a blocked pose is decided, not
+  /// measured, while set_decide_blocked is on).
+  DistanceResult query(const Pose& pose, double enough, DistanceHint hint = {}, bool decide = true,
                        std::span<const DistanceHint> suspects = {}) const;
 
   const PlanScene& scene_;
   double margin_;
   Vec3 reference_;
   double radius_;
-  TrianglePairs exempt_;
   std::optional<Clock::time_point> deadline_;
   bool decide_blocked_ = false;
   mutable std::atomic<std::uint64_t> distance_queries_{0};

@@ -1,7 +1,9 @@
 #pragma once
-// The escape from a start in contact (internal to src/plan; docs/planner.md, "Starting in
-// contact"): one pure translation, certified with the start's contact pairs exempt, to the
-// nearest pose where the full clearance holds.
+// The way out of contact (internal to src/plan; docs/planner.md, "The contact model"): from a
+// pose in contact — the start, or the goal of an insertion, whose approach is an escape played
+// backwards — one or two straight pulls, each certified by the contact layer under the mate rule
+// taken where it starts, to the nearest pose with the full clearance.
+#include "contact_moves.h"
 #include "plan_context.h"
 
 #include <optional>
@@ -9,18 +11,13 @@
 
 namespace swept::detail {
 
-/// Directions that separate the body at `start` from the obstacle faces of `pairs` (obstacle
-/// triangle, body triangle): each touched face's normal, oriented toward the body (toward the
-/// touching body triangle, or toward the body's reference point when the two are coplanar),
-/// then the normalised sum of every two of them. At most 12 distinct normals, in the order of
-/// the pairs.
-std::vector<Vec3> separating_directions(const PlanScene& scene, const Pose& start, const TrianglePairs& pairs);
-
-/// The escape's end: along each candidate direction (candidate_directions, then the
-/// separating directions of the checker's exempt pairs), the first pose with the full
-/// clearance at distances 10^-3·size·1.5^k inside the bounds, kept when the translation to it
-/// is certified with the exempt pairs left out; the nearest such pose over all directions.
+/// The poses after `from` of the way out: one pull (along a contact direction, a world axis,
+/// the body's axes or toward the goal) to the first pose with the full clearance at distances
+/// 10^-3·size·1.5^k inside the bounds, the nearest such pose over all directions; where no
+/// single pull is certified, a slide (along a direction of the same list, as far as it is
+/// certified, at the same distances) then such a pull from where the slide ends, the first found
+/// in that order. Every pose but the last may be in contact; the last has the full clearance.
 /// Nullopt when none (or the time is up).
-std::optional<Pose> escape_from_contact(PlanContext& context, const Pose& start);
+std::optional<std::vector<Pose>> escape_from_contact(PlanContext& context, const ContactMoves& contact, const Pose& from);
 
 }  // namespace swept::detail

@@ -60,7 +60,7 @@ struct PlanContext {
   bool certify(const Pose& a, double da, const Pose& b, double db, int max_queries = kMaxCertificateQueries,
                std::array<const std::atomic<bool>*, 2> cancel = {}, Pieces pieces = Pieces::two_earliest) {
     ++edges_checked;
-    return check.certify(a, da, b, db, false, max_queries, pieces, cancel).clear();
+    return check.certify(a, da, b, db, max_queries, pieces, cancel).clear();
   }
 };
 

@@ -12,6 +12,7 @@
 #include "swept/plan/planner.h"
 
 #include "checker.h"
+#include "contact_moves.h"
 #include "escape.h"
 #include "grid.h"
 #include "lazy_astar.h"
@@ -36,6 +37,7 @@ namespace {
 
 using detail::Checker;
 using detail::Clock;
+using detail::ContactMoves;
 using detail::PlanContext;
 
 // Expansions the grid's levels may spend without running out of nodes before the trees take
@@ -80,14 +82,18 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
   PlanResult r;
   std::size_t nodes_known = 0;  // grid nodes known to the search
   std::uint64_t proximity_queries = 0;
+  std::optional<ContactMoves> contact;           // the contact layer, once a pose in contact asks for it
+  auto contact_sweeps = [&]() -> std::uint64_t { return contact ? contact->sweeps() : 0; };
+  std::atomic<std::size_t>* searched = nullptr;  // the search's edges, once it runs
+  auto edges_searched = [&]() -> std::size_t { return searched ? searched->load() : 0; };
   auto fail = [&](PlanStatus s, std::string msg) {
     r.status = s;
     r.message = std::move(msg);
     r.nodes_checked = nodes_known;
-    r.edges_checked = context.edges_checked;
+    r.edges_checked = context.edges_checked + edges_searched();
     r.queries.distance = check.distance_queries();
     r.queries.proximity = proximity_queries;
-    r.queries.sweep = check.sweeps();
+    r.queries.sweep = check.sweeps() + contact_sweeps();
     r.time_ms.total = context.elapsed_s() * 1e3;
     if (r.time_ms.search == 0.0) r.time_ms.search = r.time_ms.total;
     return r;
@@ -107,53 +113,67 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
   }
   check.set_deadline(started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(context.time_limit_s)));
   Pose start = problem.start;
-  std::vector<Pose> prefix{problem.start};
+  std::vector<Pose> prefix{problem.start};  // the start and its way out of contact
+  std::vector<Pose> suffix;                 // the goal's way out of contact, played backwards (the approach)
+  auto contact_moves = [&]() -> const ContactMoves& {
+    if (!contact) contact.emplace(scene, margin, problem.contact_tolerance);
+    return *contact;
+  };
+  auto in_contact_message = [&](const char* which, double d) {
+    std::ostringstream os;
+    os << "the " << which << " pose is " << (d <= 0 ? "in collision with" : "closer than the clearance to")
+       << " the obstacles (distance " << d << ", clearance " << margin << "); set planner.contact_tolerance for a part "
+       << (which[0] == 's' ? "that starts" : "that ends") << " in contact";
+    return os.str();
+  };
   double start_distance = check.clearance(start, margin + 0.05 * size);
+  Problem inner = problem;  // the search's problem: its goal is the end of the approach
   if (problem.goal) {
     const double dg = check.clearance(*problem.goal, margin);
-    if (dg <= margin) {
-      std::ostringstream os;
-      os << "the goal pose is closer than the clearance " << margin << " to the obstacles (distance " << dg << ")";
-      return fail(PlanStatus::invalid_goal, os.str());
+    if (dg > margin) {
+      if (auto inside = enclosure_at(scene, *problem.goal)) return fail(PlanStatus::invalid_goal, "the goal pose is in collision: " + *inside);
+    } else {
+      if (problem.contact_tolerance <= 0.0) return fail(PlanStatus::invalid_goal, in_contact_message("goal", dg));
+      const auto away = detail::escape_from_contact(context, contact_moves(), *problem.goal);
+      if (!away)
+        return fail(context.out_of_time() ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
+                    "the goal is in contact and no straight approach (one pull, or a slide then a pull, along the contact "
+                    "normals, the world axes, the body's axes or toward the start) reaches it from a pose with the full "
+                    "clearance under the mate rule");
+      suffix.assign(away->rbegin(), away->rend());
+      suffix.push_back(*problem.goal);
+      inner.goal = suffix.front();
     }
-    if (auto inside = enclosure_at(scene, *problem.goal)) return fail(PlanStatus::invalid_goal, "the goal pose is in collision: " + *inside);
   }
   if (start_distance > margin) {
     if (auto inside = enclosure_at(scene, start)) return fail(PlanStatus::invalid_start, "the start pose is in collision: " + *inside);
-  }
-  if (start_distance <= margin) {
-    if (problem.contact_tolerance <= 0.0) {
-      std::ostringstream os;
-      os << "the start pose is " << (start_distance <= 0 ? "in collision with" : "closer than the clearance to")
-         << " the obstacles (distance " << start_distance << ", clearance " << margin
-         << "); set planner.contact_tolerance for a part that starts in contact";
-      return fail(PlanStatus::invalid_start, os.str());
-    }
-    ++proximity_queries;
-    check.set_exempt(proximity_pairs(scene.obstacle_tree, Pose{}, scene.body_tree, start,
-                                     {.threshold = margin + problem.contact_tolerance})
-                         .pairs);
-    const std::optional<Pose> escape = detail::escape_from_contact(context, start);
-    if (!escape) {
+  } else {
+    if (problem.contact_tolerance <= 0.0) return fail(PlanStatus::invalid_start, in_contact_message("start", start_distance));
+    const auto away = detail::escape_from_contact(context, contact_moves(), start);
+    if (!away) {
       return fail(context.out_of_time() && check.cap_refusals() == 0 ? PlanStatus::no_path_time : PlanStatus::no_path_resolution,
-                  "the body starts in contact and no straight escape (along the world axes, the body's axes "
-                  "or toward the goal) reaches a pose with the full clearance");
+                  "the body starts in contact and no straight escape (one pull, or a slide then a pull, along the contact "
+                  "normals, the world axes, the body's axes or toward the goal) reaches a pose with the full clearance "
+                  "under the mate rule");
     }
-    start = *escape;
-    prefix.push_back(start);
+    prefix.insert(prefix.end(), away->begin(), away->end());
+    start = prefix.back();
     start_distance = check.clearance(start, margin + 0.05 * size);
   }
+  // The search runs toward the end of the approach.
+  PlanContext search{inner, scene, space, check, options, started, context.time_limit_s};
+  searched = &search.edges_checked;
 
   // From here on the search only asks whether a blocked pose is blocked (the messages above
   // report exact distances): its queries stop at the first pair closer than the margin.
   check.set_decide_blocked(true);
   // The search: straight moves, then the grid anchored at the search start.
   const detail::Grid grid(space, problem.start, start, margin, size);
-  detail::LazyGridSearch grid_search(context, grid, start, start_distance);
+  detail::LazyGridSearch grid_search(search, grid, start, start_distance);
   nodes_known = grid_search.nodes_known();
   std::vector<Pose> path;
   bool found = false;
-  if (goal_reached(space, problem, start)) {
+  if (goal_reached(space, inner, start)) {
     path = {start};
     found = true;
     r.level = -1;
@@ -174,7 +194,7 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
     std::size_t tree_nodes = 0;
     std::optional<double> goal_distance;
     auto grow_trees = [&] {
-      detail::TreeSearch trees(context, start, start_distance, *goal_distance);
+      detail::TreeSearch trees(search, start, start_distance, *goal_distance);
       trees.set_cancel(&stop_trees);
       tree_path = trees.run(tree_outcome);
       tree_nodes = trees.nodes();
@@ -182,26 +202,26 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
     const bool beside = !options.max_queries && tbb::this_task_arena::max_concurrency() >= 2;
     tbb::task_group beside_trees;
     if (beside) {
-      goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
+      goal_distance = inner.goal ? check.clearance(*inner.goal, margin + 0.05 * size) : 0.0;
       beside_trees.run(grow_trees);
     }
     // Isolated: while this thread waits inside the straight moves' or the grid's parallel work,
     // it takes no task of the trees beside them (it would have to finish it before going on).
     std::optional<std::vector<Pose>> cells;
     tbb::this_task_arena::isolate([&] {
-      if (auto moves = detail::straight_moves(context, start, start_distance)) {
+      if (auto moves = detail::straight_moves(search, start, start_distance)) {
         path = std::move(*moves);
         found = true;
         r.level = -1;
       }
-      if (!found && !context.out_of_time()) cells = grid_search.run(outcome, kGridBudget);
+      if (!found && !search.out_of_time()) cells = grid_search.run(outcome, kGridBudget);
     });
     const bool trees_needed = !found && !cells && outcome == detail::GridOutcome::resolution;
     if (beside) {
       if (!trees_needed) stop_trees = true;
       beside_trees.wait();
-    } else if (trees_needed && !context.out_of_time()) {
-      goal_distance = problem.goal ? check.clearance(*problem.goal, margin + 0.05 * size) : 0.0;
+    } else if (trees_needed && !search.out_of_time()) {
+      goal_distance = inner.goal ? check.clearance(*inner.goal, margin + 0.05 * size) : 0.0;
       grow_trees();
     }
     if (!found) {  // else straight moves gave the path: the grid's and the trees' are not used
@@ -223,7 +243,7 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
       }
     }
   }
-  const double t_search = context.elapsed_s();
+  const double t_search = search.elapsed_s();
   r.time_ms.search = t_search * 1e3;
   nodes_known = grid_search.nodes_known();
   if (!found) {
@@ -233,20 +253,20 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
                                                                  : PlanStatus::no_path_resolution;
     // The budget, checked where the count is the same on every run, names the stop whenever it
     // was reached: a run that also ran out of time says the same.
-    if (context.over_budget()) why = PlanStatus::no_path_budget;
-    else if (context.out_of_time()) why = PlanStatus::no_path_time;
+    if (search.over_budget()) why = PlanStatus::no_path_budget;
+    else if (search.out_of_time()) why = PlanStatus::no_path_time;
     std::ostringstream os;
     if (const std::uint64_t refused = check.cap_refusals(); refused > 0) {
       // The limiting factor was the resolution of the certificate, whatever the clock says.
       os << "no path found: " << refused << " motion" << (refused == 1 ? " grazes" : "s graze")
          << " the clearance too closely to certify (more than " << kMaxCertificateQueries
          << " distance queries each; a smaller clearance or a wider passage helps)";
-      if (why == PlanStatus::no_path_time) os << ", and the search then reached the time limit of " << context.time_limit_s << " s";
+      if (why == PlanStatus::no_path_time) os << ", and the search then reached the time limit of " << search.time_limit_s << " s";
       if (why == PlanStatus::no_path_budget) os << ", and the search then reached its budget of " << *options.max_queries << " distance queries";
       return fail(PlanStatus::no_path_resolution, os.str());
     }
     switch (why) {
-      case PlanStatus::no_path_time: os << "no path found within the time limit of " << context.time_limit_s << " s"; break;
+      case PlanStatus::no_path_time: os << "no path found within the time limit of " << search.time_limit_s << " s"; break;
       case PlanStatus::no_path_budget:
         os << "no path found within the budget of " << *options.max_queries << " distance queries";
         break;
@@ -258,24 +278,23 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
     }
     return fail(why, os.str());
   }
-  // Smoothing after the escape prefix (which stays as it is).
+  // Smoothing between the way out of contact and the approach (which stay as they are).
+  detail::smooth(search, path, 0);
   std::vector<Pose> full = prefix;
   full.insert(full.end(), path.begin() + 1, path.end());
-  const std::size_t fixed = prefix.size() - 1;
-  detail::smooth(context, full, fixed);
-  r.time_ms.smooth = (context.elapsed_s() - t_search) * 1e3;
+  if (!suffix.empty()) full.insert(full.end(), suffix.begin() + 1, suffix.end());
+  const std::size_t escape_segments = prefix.size() - 1, approach_segments = suffix.empty() ? 0 : suffix.size() - 1;
+  r.time_ms.smooth = (search.elapsed_s() - t_search) * 1e3;
 
   // Final certification of every segment and the smallest distance along the path, by the
   // same function `swept check` runs (check_path.cpp), whatever the time.
   const PathCheckResult final_check = check_path(problem, scene, Path{full});
-  if (fixed > 0) ++proximity_queries;  // check_path finds the exempt pairs again
   if (!final_check.valid)
     return fail(PlanStatus::no_path_resolution, "internal: the found path failed its final certification: " + final_check.message);
-  if (final_check.escape_segments != fixed)
-    return fail(PlanStatus::no_path_resolution, "internal: the final certification disagrees on the escape from contact");
-  r.escape_segments = final_check.escape_segments;
-  r.exempt_pairs = final_check.exempt_pairs;
-  r.escape_clearance = final_check.escape_clearance;
+  if (final_check.contact_segments != escape_segments + approach_segments)
+    return fail(PlanStatus::no_path_resolution, "internal: the final certification disagrees on the motions in contact");
+  r.escape_segments = escape_segments;
+  r.approach_segments = approach_segments;
   r.status = PlanStatus::solved;
   r.path.poses = std::move(full);
   for (std::size_t i = 0; i + 1 < r.path.poses.size(); ++i) {
@@ -288,10 +307,10 @@ PlanResult run_planner(const Problem& problem, const PlanScene& scene, const Pla
   r.min_clearance = final_check.min_clearance;
   r.path_hash = path_hash(r.path);
   r.nodes_checked = nodes_known;
-  r.edges_checked = context.edges_checked;
+  r.edges_checked = context.edges_checked + search.edges_checked;
   r.queries.distance = check.distance_queries() + final_check.distance_queries;
   r.queries.proximity = proximity_queries;
-  r.queries.sweep = check.sweeps() + final_check.sweeps;
+  r.queries.sweep = check.sweeps() + contact_sweeps() + final_check.sweeps;
   r.time_ms.total = context.elapsed_s() * 1e3;
   std::ostringstream os;
   os << "solved"

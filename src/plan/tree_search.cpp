@@ -539,7 +539,7 @@ bool TreeSearch::certify_path(int tree_a, std::int32_t node_a, int tree_b, std::
     const std::vector<TreeNode>& tree = trees_[edges[k].tree];
     const TreeNode& child = tree[edges[k].node];
     const TreeNode& parent = tree[child.parent];
-    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance, false, kMaxCertificateQueries,
+    edges[k].status = check.certify(parent.pose, parent.distance, child.pose, child.distance, kMaxCertificateQueries,
                                     Pieces::two_earliest, {cancel_, nullptr}).status;
   });
   bool all = true;

@@ -32,12 +32,10 @@ CliRun run(const std::string& args) { return test::run_cli("plan " + args, /*wit
 test::PlannerFigures figures_of(const nlohmann::json& doc) {
   test::PlannerFigures f;
   f.min_clearance = doc.at("min_clearance").get<double>();
-  const auto& escape = doc.at("escape");
-  f.escape_segments = escape.is_null() ? 0 : escape.at("segments").get<std::size_t>();
-  if (!escape.is_null()) {
-    f.exempt_pairs = escape.at("exempt_pairs").get<std::size_t>();
-    f.escape_clearance = escape.at("min_clearance_other_pairs").get<double>();
-  }
+  std::size_t contact = 0;
+  for (const char* end : {"escape", "approach"})
+    if (!doc.at(end).is_null()) contact += doc.at(end).at("segments").get<std::size_t>();
+  f.contact_segments = contact;
   return f;
 }
 
@@ -151,7 +149,7 @@ TEST_F(PlanCli, TheCheckOfWrittenPathsCanFail) {
 
 TEST_F(PlanCli, StartInContactEscapesAndTheOracleAgrees) {
   // The peg rests on the bottom of its blind hole against one wall (distance 0): with a contact
-  // tolerance the first segment is an escape, which the oracle checks with its own exemption.
+  // tolerance the first segment is an escape, which the oracle checks with its own contact rule.
   auto g = scenes::peg_in_hole(10.0, 1e-2);
   g.name = "peg_contact";
   g.problem.start = Pose::from_translation(Vec3(-1e-2 * 10.0, 0, -20 + 12.5));

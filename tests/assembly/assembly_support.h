@@ -4,6 +4,7 @@
 // sag), and an independent sampled check of straight pulls with the oracle's triangle distance.
 #include "oracle/path_oracle.h"
 #include "swept/assembly/disassemble.h"
+#include "swept/contact/mate_rule.h"
 #include "swept/geometry/distance.h"
 #include "swept/scenes/box_problems.h"
 

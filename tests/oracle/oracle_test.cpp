@@ -231,7 +231,7 @@ TEST(OraclePath, CubeSlidingPastACube) {
   EXPECT_NEAR(r.dense_min, std::sqrt(0.5), 1e-12);  // samples hit the overlap
   // 2000 dense samples over one segment of length 10.
   EXPECT_DOUBLE_EQ(r.dense_spacing, 10.0 / 2000);
-  EXPECT_FALSE(r.escape);
+  EXPECT_EQ(r.contact_segments, 0u);
   // Just above the true minimum the certificate must refuse, and say where.
   in.clearance = 0.71;
   r = check_path(in);
@@ -306,31 +306,23 @@ TEST(OraclePath, StartInContactWithoutToleranceIsInvalid) {
   in.clearance = 0.01;
   PathCheckReport r = check_path(in);
   EXPECT_FALSE(r.valid);
-  EXPECT_FALSE(r.escape);
+  EXPECT_EQ(r.contact_segments, 0u);
   EXPECT_EQ(r.bad_segment, 0);
   EXPECT_EQ(r.bad_t, 0.0);
-  // With a contact tolerance the lift is an escape: valid, every touching pair exempt. The top
-  // face is split by its diagonal y = x into A (y ≤ x) and B (y ≥ x); the body's bottom
-  // corners are (−.5,−.5) and (.5,.5) on the diagonal, (.5,−.5) in A only, (−.5,.5) in B only.
-  // Body triangles holding a diagonal corner touch both (bottom 2, y = −.5 side 2, x = −.5
-  // side 2, and one each of the y = +.5 and x = +.5 sides: 8 × 2 = 16); the other triangle of
-  // the y = +.5 side holds only (−.5,.5) → B, of the x = +.5 side only (.5,−.5) → A: 16 + 2 = 18.
-  // The obstacle's sides are 0.5 away from the body.
+  // With a contact tolerance the lift is a motion in contact: the faces touch (coplanar, no
+  // depth) and part.
   in.contact_tolerance = 0.001;
   r = check_path(in);
   EXPECT_TRUE(r.valid) << r.why;
-  EXPECT_TRUE(r.escape);
-  EXPECT_EQ(r.exempt_pairs, 18u);
+  EXPECT_EQ(r.contact_segments, 1u);
   EXPECT_EQ(r.dense_min, 0.0);
-  // Non-exempt pairs at the start: the obstacle's sides to the body's sides and bottom are
-  // 0.5 apart horizontally; the top face to the body's top is 1. So 0.5.
-  EXPECT_NEAR(r.escape_dense_min, 0.5, 1e-12);
+  EXPECT_EQ(r.max_penetration, 0.0);
 }
 
 TEST(OraclePath, EscapeFromASealedShellIsInvalid) {
   // A closed shell [−1,1]³ with the body [−0.5,0.5]³ resting on its floor (centre z = −0.5).
-  // Lifting it straight up to z = 3 makes the body's top (a non-exempt pair with the lid, 1.5
-  // apart at the start) cross the lid when the centre passes z = 0.5: t = 1/3.5.
+  // Lifting it straight up to z = 3 makes the body's sides cross the lid once the top passes
+  // it, centre z > 0.5: t > 1/3.5, by up to half the body's height.
   PathCheckInput in;
   in.obstacles = box(V(-1, -1, -1), V(1, 1, 1));
   in.body = box(V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5));
@@ -338,12 +330,21 @@ TEST(OraclePath, EscapeFromASealedShellIsInvalid) {
   in.clearance = 0.001;
   in.contact_tolerance = 0.01;
   const PathCheckReport r = check_path(in);
-  EXPECT_TRUE(r.escape);
+  EXPECT_EQ(r.contact_segments, 1u);
   EXPECT_FALSE(r.valid);
   EXPECT_EQ(r.bad_segment, 0);
-  EXPECT_GT(r.bad_t, 0.0);
-  EXPECT_LT(r.bad_t, 1.0);
-  EXPECT_EQ(r.escape_dense_min, 0.0);
+  EXPECT_GT(r.bad_t, 1.0 / 3.5);
+  EXPECT_LT(r.bad_t, 1.0 / 3.5 + 0.01);  // the first sample past the tolerance
+  EXPECT_GT(r.max_penetration, 0.4);
+}
+
+TEST(OraclePath, TrianglePenetration) {
+  // Apart, touching at a point, crossing: 0, 0, and the shorter way out.
+  const Tri flat = tri(V(-1, -1, 0), V(1, -1, 0), V(0, 1, 0));
+  EXPECT_EQ(triangle_penetration(flat, tri(V(-1, -1, 1), V(1, -1, 1), V(0, 1, 1))), 0.0);
+  EXPECT_EQ(triangle_penetration(flat, tri(V(0, 0, 0), V(0, 0, 1), V(0.1, 0, 1))), 0.0);
+  // A vertical triangle through the flat one, 0.3 below and 0.7 above: out by 0.3 along z.
+  EXPECT_NEAR(triangle_penetration(flat, tri(V(-0.2, -0.5, -0.3), V(0.2, -0.5, -0.3), V(0, -0.5, 0.7))), 0.3, 1e-12);
 }
 
 // An open U-channel along x made of three single triangles (floor z = 0, walls y = ±0.5), with
@@ -361,27 +362,24 @@ PathCheckInput u_channel() {
 }
 
 TEST(OraclePath, EscapeAlongAUChannelIsValid) {
-  // Sliding out along +x to centre x = 5: every pair that touches at the start is exempt, and
-  // the others never come closer than 1 (floor to the block's top, each wall to the far side).
-  // The end is 1.5 from the channel's end at x = 3.
+  // Sliding out along +x to centre x = 5: the block's faces slide on the floor and the walls
+  // (coplanar: no depth). The end is 1.5 from the channel's end at x = 3.
   PathCheckInput in = u_channel();
   in.poses = {at(V(0, 0, 0.5)), at(V(5, 0, 0.5))};
   const PathCheckReport r = check_path(in);
   EXPECT_TRUE(r.valid) << r.why;
-  EXPECT_TRUE(r.escape);
-  // Exempt: floor × (bottom 2 + sides 8), each wall × (its side 2 + bottom 2 + top 2 + the
-  // x-sides 4) = 10 + 10 + 10. Every body triangle holds 3 of its face's 4 corners, so each
-  // touches whatever its face's corners touch.
-  EXPECT_EQ(r.exempt_pairs, 30u);
+  EXPECT_EQ(r.contact_segments, 1u);
   EXPECT_EQ(r.dense_min, 0.0);
-  EXPECT_NEAR(r.escape_dense_min, 1.0, 1e-12);
   // A second segment after the escape is checked with all pairs and full clearance.
   in.poses.push_back(at(V(5, 0, 3)));
   EXPECT_TRUE(check_path(in).valid);
-  in.poses.back() = at(V(0, 0, 3));  // back over the channel, through the walls: refused
+  in.poses.back() = at(V(0, 3, 3));  // back over the channel, through a wall: refused
   const PathCheckReport back = check_path(in);
   EXPECT_FALSE(back.valid);
   EXPECT_EQ(back.bad_segment, 1) << back.why;
+  // Sideways out of the channel, through a wall: the wall cuts the block.
+  in.poses = {at(V(0, 0, 0.5)), at(V(0, 3, 0.5))};
+  EXPECT_FALSE(check_path(in).valid);
 }
 
 TEST(OraclePath, RotatingEscapeIsInvalid) {
@@ -389,21 +387,24 @@ TEST(OraclePath, RotatingEscapeIsInvalid) {
   PathCheckInput in = u_channel();
   in.poses = {at(V(0, 0, 0.5)), rotated(V::UnitX(), 0.1, V(5, 0, 0.5))};
   const PathCheckReport r = check_path(in);
-  EXPECT_TRUE(r.escape);
+  EXPECT_EQ(r.contact_segments, 1u);
   EXPECT_FALSE(r.valid);
   EXPECT_EQ(r.bad_segment, 0);
   EXPECT_NE(r.why.find("rotates"), std::string::npos) << r.why;
 }
 
-TEST(OraclePath, EscapeMustEndWithFullClearance) {
+TEST(OraclePath, AMotionEndingInContactIsAMotionInContact) {
   // Sliding only to x = 3.5 leaves the block's back face at x = 3 on the floor's tip (3,0,0):
-  // distance 0 at the end with all pairs counted.
+  // in contact at the end too. A rotation from there is a motion in contact: refused.
   PathCheckInput in = u_channel();
   in.poses = {at(V(0, 0, 0.5)), at(V(3.5, 0, 0.5))};
-  const PathCheckReport r = check_path(in);
+  PathCheckReport r = check_path(in);
+  EXPECT_TRUE(r.valid) << r.why;
+  in.poses.push_back(rotated(V::UnitZ(), 0.1, V(3.5, 0, 3)));
+  r = check_path(in);
+  EXPECT_EQ(r.contact_segments, 2u);
   EXPECT_FALSE(r.valid);
-  EXPECT_EQ(r.bad_segment, 0);
-  EXPECT_EQ(r.bad_t, 1.0) << r.why;
+  EXPECT_EQ(r.bad_segment, 1) << r.why;
 }
 
 TEST(OraclePath, SameReportAtAnyThreadCount) {

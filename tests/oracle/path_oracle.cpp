@@ -60,11 +60,16 @@ class Scene {
     return detail::closest_pair(obstacle_tree_, obstacles_, p.tree, p.world, exclude);
   }
 
-  // Every pair closer than `threshold` at the pose.
-  std::vector<PairKey> close_pairs(const RigidPose& pose, double threshold) const {
+  // The deepest triangle_penetration of the pairs that touch at the pose.
+  double penetration(const RigidPose& pose) const {
     Placed& p = scratch_.local();
     place(pose, p);
-    return detail::close_pairs(obstacle_tree_, obstacles_, p.tree, p.world, threshold);
+    double deepest = 0;
+    for (PairKey k : detail::close_pairs(obstacle_tree_, obstacles_, p.tree, p.world, 1e-150)) {
+      const auto a = static_cast<std::size_t>(k >> 32), b = static_cast<std::size_t>(k & 0xffffffffu);
+      deepest = std::max(deepest, triangle_penetration(obstacles_[a], p.world[b]));
+    }
+    return deepest;
   }
 
  private:
@@ -108,7 +113,7 @@ std::string describe(std::size_t seg, double t, const Closest& c, double clearan
 std::optional<Failure> certify(const Scene& scene, const Segment& seg, std::size_t index, const Eigen::Vector3d& ref,
                                const PathCheckInput& in, const std::vector<PairKey>* exclude, std::size_t& queries) {
   const double delta = in.clearance;
-  const char* what = exclude ? "non-exempt" : "";
+  const char* what = "";
   auto D = [&](double t) {
     ++queries;
     return scene.at(interpolate_pose(seg.a, seg.b, t, ref), exclude);
@@ -147,6 +152,34 @@ bool finite_pose(const RigidPose& p) { return p.R.allFinite() && p.t.allFinite()
 
 }  // namespace
 
+double triangle_penetration(const Tri& a, const Tri& b) {
+  if (triangle_distance(a, b) > 0) return 0;
+  std::vector<Eigen::Vector3d> axes;
+  const Eigen::Vector3d na = (a.v[1] - a.v[0]).cross(a.v[2] - a.v[0]);
+  const Eigen::Vector3d nb = (b.v[1] - b.v[0]).cross(b.v[2] - b.v[0]);
+  axes.push_back(na);
+  axes.push_back(nb);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) axes.push_back((a.v[(i + 1) % 3] - a.v[i]).cross(b.v[(j + 1) % 3] - b.v[j]));
+  for (int i = 0; i < 3; ++i) {
+    axes.push_back(na.cross(a.v[(i + 1) % 3] - a.v[i]));
+    axes.push_back(nb.cross(b.v[(i + 1) % 3] - b.v[i]));
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& axis : axes) {
+    const double n = axis.norm();
+    if (!(n > 1e-12 * (1.0 + na.norm() + nb.norm()))) continue;
+    const Eigen::Vector3d u = axis / n;
+    double lo_a = u.dot(a.v[0]), hi_a = lo_a, lo_b = u.dot(b.v[0]), hi_b = lo_b;
+    for (int k = 1; k < 3; ++k) {
+      lo_a = std::min(lo_a, u.dot(a.v[k])), hi_a = std::max(hi_a, u.dot(a.v[k]));
+      lo_b = std::min(lo_b, u.dot(b.v[k])), hi_b = std::max(hi_b, u.dot(b.v[k]));
+    }
+    best = std::min(best, std::max(0.0, std::min(hi_a - lo_b, hi_b - lo_a)));
+  }
+  return std::isfinite(best) ? best : 0.0;
+}
+
 PathCheckReport check_path(const PathCheckInput& in) {
   PathCheckReport rep;
   const double delta = in.clearance;
@@ -178,40 +211,41 @@ PathCheckReport check_path(const PathCheckInput& in) {
     segs.push_back(s);
   }
 
-  // The start decides whether the first segment is an escape from contact.
+  // Where each waypoint is in contact decides which segments are motions in contact.
+  std::vector<double> at_waypoint(in.poses.size());
+  tbb::parallel_for(std::size_t{0}, in.poses.size(), [&](std::size_t w) { at_waypoint[w] = scene.at(in.poses[w]).distance; });
   const Closest start = scene.at(in.poses.front());
-  rep.escape = !segs.empty() && in.contact_tolerance > 0 && !(start.distance > delta);
-  std::vector<PairKey> exempt;
-  if (rep.escape) exempt = scene.close_pairs(in.poses.front(), delta + in.contact_tolerance);
-  rep.exempt_pairs = exempt.size();
+  std::vector<bool> in_contact(segs.size(), false);
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    in_contact[i] = in.contact_tolerance > 0 && (!(at_waypoint[i] > delta) || !(at_waypoint[i + 1] > delta));
+    if (in_contact[i]) ++rep.contact_segments;
+  }
 
-  // Dense samples: n_i intervals on segment i, n_i ∝ length, at least 16.
+  // Dense samples: n_i intervals on segment i, n_i ∝ length, at least 16; on a motion in contact
+  // no farther apart than a quarter of the tolerance (at most 2^16).
   struct Sample {
     std::size_t seg;
     double t;
-    bool relaxed;  // the escape's distance over the non-exempt pairs
   };
   std::vector<Sample> samples;
   for (std::size_t i = 0; i < segs.size(); ++i) {
     const double share = total > 0 ? static_cast<double>(in.dense_samples) * segs[i].length / total : 0.0;
-    const int n = std::max(16, static_cast<int>(std::ceil(share)));
+    int n = std::max(16, static_cast<int>(std::ceil(share)));
+    if (in_contact[i]) n = std::max(n, static_cast<int>(std::min(65536.0, std::ceil(4.0 * segs[i].length / in.contact_tolerance))));
     rep.dense_spacing = std::max(rep.dense_spacing, segs[i].length / n);
-    for (int k = i == 0 ? 0 : 1; k <= n; ++k) samples.push_back({i, static_cast<double>(k) / n, false});
-    if (i == 0 && rep.escape)
-      for (int k = 0; k <= n; ++k) samples.push_back({i, static_cast<double>(k) / n, true});
+    for (int k = i == 0 ? 0 : 1; k <= n; ++k) samples.push_back({i, static_cast<double>(k) / n});
   }
-  std::vector<double> dense(samples.size());
+  std::vector<double> dense(samples.size()), depth(samples.size(), 0.0);
   tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t k) {
     const Sample& s = samples[k];
     const RigidPose p = interpolate_pose(segs[s.seg].a, segs[s.seg].b, s.t, in.reference);
-    dense[k] = scene.at(p, s.relaxed ? &exempt : nullptr).distance;
+    dense[k] = scene.at(p).distance;
+    if (in_contact[s.seg] && !(dense[k] > 0)) depth[k] = scene.penetration(p);
   });
   rep.dense_min = segs.empty() ? start.distance : std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    if (samples[k].relaxed)
-      rep.escape_dense_min = std::min(rep.escape_dense_min, dense[k]);
-    else
-      rep.dense_min = std::min(rep.dense_min, dense[k]);
+    rep.dense_min = std::min(rep.dense_min, dense[k]);
+    rep.max_penetration = std::max(rep.max_penetration, depth[k]);
   }
 
   if (segs.empty()) {
@@ -228,21 +262,22 @@ PathCheckReport check_path(const PathCheckInput& in) {
   std::vector<std::optional<Failure>> failure(segs.size());
   std::vector<std::size_t> queries(segs.size(), 0);
   tbb::parallel_for(std::size_t{0}, segs.size(), [&](std::size_t i) {
-    if (i == 0 && rep.escape) {
-      if (segs[0].angle > 1e-12) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "segment 0 is an escape from contact but rotates by %.3g rad (must be a pure translation)",
-                      segs[0].angle);
-        failure[0] = Failure{0.0, buf};
+    if (in_contact[i]) {
+      char buf[240];
+      if (segs[i].angle > 1e-12) {
+        std::snprintf(buf, sizeof buf, "segment %zu has an end in contact but rotates by %.3g rad (must be a pure translation)", i,
+                      segs[i].angle);
+        failure[i] = Failure{0.0, buf};
         return;
       }
-      failure[0] = certify(scene, segs[0], 0, in.reference, in, &exempt, queries[0]);
-      if (!failure[0]) {
-        ++queries[0];
-        const Closest end = scene.at(segs[0].b);
-        if (!(end.distance > delta))
-          failure[0] = Failure{1.0, describe(0, 1.0, end, delta, "escape end (all pairs):")};
-      }
+      const double limit = in.contact_tolerance * (1 + 1e-9) + 1e-12;
+      for (std::size_t k = 0; k < samples.size(); ++k)
+        if (samples[k].seg == i && depth[k] > limit) {
+          std::snprintf(buf, sizeof buf, "segment %zu at t=%.9g: two triangles reach %.9g into each other (tolerance %.9g)", i,
+                        samples[k].t, depth[k], in.contact_tolerance);
+          failure[i] = Failure{samples[k].t, buf};
+          return;
+        }
       return;
     }
     failure[i] = certify(scene, segs[i], i, in.reference, in, nullptr, queries[i]);

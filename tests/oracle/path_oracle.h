@@ -34,8 +34,8 @@ struct PathCheckInput {
   /// shortest slerp about it.
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();
   double clearance = 0;  ///< distance required along the whole continuous motion
-  /// > 0: a start closer than `clearance` may escape along a translational first segment, with
-  /// the triangle pairs closer than clearance + contact_tolerance at the start exempt.
+  /// > 0: a segment with an end closer than `clearance` is a motion in contact: a pure
+  /// translation along which no two triangles reach more than this into each other.
   double contact_tolerance = 0;
   /// Total dense samples, spread over the segments by length (at least 16 intervals each).
   int dense_samples = 2000;
@@ -45,30 +45,36 @@ struct PathCheckInput {
 };
 
 struct PathCheckReport {
-  bool valid = false;  ///< every segment certified (with the exemption where it applies)
+  bool valid = false;  ///< every segment certified (the contact rule where it applies)
   std::string why;     ///< when not valid: segment, t, distance found, triangle pair
   int bad_segment = -1;
   double bad_t = -1;
-  /// Smallest exact distance over all triangle pairs at the dense samples (escape included).
+  /// Smallest exact distance over all triangle pairs at the dense samples (motions in contact included).
   double dense_min = std::numeric_limits<double>::infinity();
   /// Largest motion-metric length between consecutive dense samples: the true minimum along
   /// the path is at least dense_min − dense_spacing/2.
   double dense_spacing = 0;
   double max_segment_length = 0;  ///< longest segment in the motion metric ‖Δc‖ + r·θ
-  bool escape = false;  ///< the first segment was checked with the contact exemption
-  std::size_t exempt_pairs = 0;
-  /// Smallest distance of the non-exempt pairs at the escape segment's dense samples.
-  double escape_dense_min = std::numeric_limits<double>::infinity();
+  std::size_t contact_segments = 0;  ///< segments checked by the contact rule
+  /// The deepest any two triangles reach into each other at the contact segments' samples.
+  double max_penetration = 0;
   std::size_t certificate_queries = 0;  ///< exact distance queries spent on certificates
 };
 
 /// Checks a path: the Schwarzer–Saha–Latombe (2005) certificate of every segment with exact
-/// distances, and dense exact distances. The escape rule (docs/planner.md, "Starting in
-/// contact"): when contact_tolerance > 0 and the start's distance is ≤ clearance, the first
-/// segment must be a pure translation, along which the pairs (obstacle i, body j) closer than
-/// clearance + contact_tolerance at the start are exempt; every other pair keeps > clearance,
-/// the escape's end has full clearance, and later segments are checked with all pairs.
+/// distances, and dense exact distances. The contact rule (docs/planner.md, "The contact
+/// model"), checked by its consequence, not by the planner's mate rule: when contact_tolerance > 0,
+/// a segment with an end at distance ≤ clearance must be a pure translation along which, at
+/// samples no farther apart than a quarter of the tolerance, no two intersecting triangles
+/// overlap by more than the tolerance along every separating axis of the pair
+/// (triangle_penetration); every other segment is certified with all pairs.
 PathCheckReport check_path(const PathCheckInput& input);
+
+/// How deep two triangles reach into each other: 0 when they do not intersect, else the
+/// smallest overlap of their projections over the candidate separating axes (both normals, the
+/// nine edge cross products, and for coplanar triangles the six in-plane edge normals): the
+/// shortest translation along those axes that separates them.
+double triangle_penetration(const Tri& a, const Tri& b);
 
 /// Exact distance between two triangles: 0 when they intersect (including coplanar overlap),
 /// else the smallest of the vertex–triangle and edge–edge distances. Never NaN for finite input.

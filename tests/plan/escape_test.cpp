@@ -1,9 +1,12 @@
-// The escape from a start in contact, on fixtures whose only ways out (or lack of one) can be
-// seen by hand. docs/planner.md: along the escape segment only the triangle pairs closer than
-// clearance + contact tolerance at the start are exempt, pair by pair; every other pair keeps
-// the clearance. Every solved path is checked by the independent oracle (tests/oracle).
+// Motions in contact — the escape from a start in contact, the approach to a goal in contact —
+// on fixtures whose only ways out (or lack of one) can be seen by hand. docs/planner.md, "The
+// contact model": a motion with an end in contact is a pull the mate rule allows; every other
+// pair keeps the clearance. Every solved path is checked by the independent oracle
+// (tests/oracle), which shares no code with the mate rule.
+#include "assembly/assembly_support.h"
 #include "plan/plan_support.h"
 #include "swept/geometry/distance.h"
+#include "swept/plan/check.h"
 
 namespace swept {
 namespace {
@@ -86,6 +89,19 @@ GeneratedProblem block_in_channel() {
   return g;
 }
 
+// The sealed box without its lid (the two triangles at z = 1): a 10-triangle open shell, a sheet
+// with no inside, holding the body 0.005 from its floor and walls. The way out is a lift of a
+// little over 2.
+GeneratedProblem open_box() {
+  GeneratedProblem g = sealed_box();
+  g.name = "open_box";
+  auto& o = g.obstacles.triangles;
+  o.erase(std::remove_if(o.begin(), o.end(), [](const Triangle& t) { return t.p.z() == 1 && t.q.z() == 1 && t.r.z() == 1; }),
+          o.end());
+  EXPECT_EQ(o.size(), 10u);
+  return g;
+}
+
 bool refused(const PlanResult& r) {
   return r.status == PlanStatus::no_path_resolution || r.status == PlanStatus::no_path_bounds ||
          r.status == PlanStatus::no_path_time || r.status == PlanStatus::invalid_start;
@@ -106,40 +122,14 @@ TEST(Escape, BodyInsideASealedBoxNeverLeaves) {
   EXPECT_FALSE(rf.solved()) << rf.message;
 }
 
-TEST(Escape, ExemptionIsPairByPair) {
-  // In the sealed box the pairs within 0.03 at the start are a face of the body with the
-  // parallel face of the shell (2 × 2 triangles, 6 faces) and with the four faces of the shell
-  // next to it (an edge of the body face is 0.005 from each of them), but never a face with the opposite face
-  // (1.995 apart): the exempt set is not every body triangle in contact × every obstacle
-  // triangle in contact (which would be all 12 × 12 = 144 pairs).
-  const auto g = sealed_box();
-  const PlanScene s = scene_of(g);
-  const auto pairs = proximity_pairs(s.obstacle_tree, Pose{}, s.body_tree, Pose{}, {.threshold = 0.03}).pairs;
-  EXPECT_GT(pairs.size(), 0u);
-  EXPECT_LT(pairs.size(), 144u);
-  // Each pair must be closer than the threshold, and the pairs of opposite faces are absent:
-  // checked by brute force over all 144 pairs.
-  std::size_t expected = 0;
-  for (std::uint32_t i = 0; i < g.obstacles.triangles.size(); ++i)
-    for (std::uint32_t j = 0; j < g.body.triangles.size(); ++j) {
-      const bool close = triangle_distance(g.obstacles.triangles[i], g.body.triangles[j]).distance < 0.03;
-      EXPECT_EQ(close, pairs.contains(i, j)) << i << ", " << j;
-      expected += close;
-    }
-  EXPECT_EQ(pairs.size(), expected);
-}
-
 TEST(Escape, LidLiftsOffTheBaseAlongTheShaft) {
   const auto g = lid_over_shaft();
   const PlanScene s = scene_of(g);
   const PlanResult r = plan(g.problem, s);
   ASSERT_TRUE(r.solved()) << r.message;
   EXPECT_EQ(r.escape_segments, 1u);
-  EXPECT_GT(r.exempt_pairs, 0u);
-  // The lid rests on the base: the path's minimum over every pair is the start's 0; the escape
-  // keeps every other pair at least the clearance apart.
+  // The lid rests on the base: the path's minimum over every pair is the start's 0.
   EXPECT_EQ(r.min_clearance, 0.0);
-  EXPECT_GE(r.escape_clearance, g.problem.clearance);
   // The lid can only go up: every pose of the path has the lid at or above the base.
   for (const Pose& q : r.path.poses) EXPECT_GE(q.translation.z(), 0.0);
   check_independently(s, g.problem, r);
@@ -166,8 +156,110 @@ TEST(Escape, BlockWithThreeContactsLeavesUpwards) {
   const Pose& b = r.path.poses[1];
   EXPECT_EQ(a.rotation, b.rotation);
   EXPECT_GT(b.translation.z(), a.translation.z());
-  EXPECT_GE(r.escape_clearance, g.problem.clearance);
   check_independently(s, g.problem, r);
+}
+
+}  // namespace
+}  // namespace swept
+
+namespace swept {
+namespace {
+
+using namespace swept::test;
+
+TEST(Contact, BoxComesOutOfAnOpenBox) {
+  const auto g = open_box();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  EXPECT_EQ(r.escape_segments, 1u);
+  EXPECT_EQ(r.approach_segments, 0u);
+  // Straight up, out past the rim (z = 1 + 0.995 + the clearance).
+  const Vec3 lift = r.path.poses[1].translation - r.path.poses[0].translation;
+  EXPECT_EQ(lift.x(), 0.0);
+  EXPECT_EQ(lift.y(), 0.0);
+  EXPECT_GT(lift.z(), 1.995 + g.problem.clearance);
+  check_independently(s, g.problem, r);
+  const PathCheckResult c = check_path(g.problem, s, r.path);
+  EXPECT_TRUE(c.valid) << c.message;
+  EXPECT_EQ(c.contact_segments, 1u);
+}
+
+TEST(Contact, BoxGoesIntoAnOpenBox) {
+  // The insertion: the same path the other way, the goal in contact.
+  auto g = open_box();
+  g.problem.start = Pose::from_translation(Vec3(0, 0, 10));
+  g.problem.goal = Pose{};
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  EXPECT_EQ(r.escape_segments, 0u);
+  EXPECT_EQ(r.approach_segments, 1u);
+  EXPECT_EQ(r.path.poses.back().translation, Vec3::Zero());
+  check_independently(s, g.problem, r);
+  // Without a contact tolerance a goal in contact is refused as before.
+  g.problem.contact_tolerance = 0;
+  EXPECT_EQ(plan(g.problem, s).status, PlanStatus::invalid_goal);
+}
+
+TEST(Contact, FromOneOpenBoxIntoAnother) {
+  auto g = open_box();
+  const std::size_t n = g.obstacles.triangles.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    Triangle t = g.obstacles.triangles[k];
+    for (int v = 0; v < 3; ++v) t[v].x() += 5;
+    g.obstacles.triangles.push_back(t);
+  }
+  g.problem.goal = Pose::from_translation(Vec3(5, 0, 0));
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  EXPECT_EQ(r.escape_segments, 1u);
+  EXPECT_EQ(r.approach_segments, 1u);
+  check_independently(s, g.problem, r);
+}
+
+// A pulley (a ring of 16 segments, bore radius 3, outer 10, z ∈ [10, 20]) on a 24-gon shaft of
+// radius 3 (z ∈ [0, 40]) standing on a base plate: the two tessellations of one circle cross by
+// up to the 16-gon's sag, 3·(1 − cos(π/16)) ≈ 0.058, under the tolerance 0.1. Its only way off
+// is along the shaft, up past its end.
+GeneratedProblem pulley_on_shaft() {
+  GeneratedProblem g;
+  g.name = "pulley_on_shaft";
+  scenes::add_box(g.obstacles.triangles, Vec3(-20, -20, -5), Vec3(20, 20, 0));
+  add_prism(g.obstacles.triangles, 3, 24, 0, 40);
+  add_ring(g.body.triangles, 3, 10, 16, 10, 20);
+  g.problem.start = Pose{};
+  g.problem.goal_outside = true;
+  g.problem.clearance = 0.01;
+  g.problem.contact_tolerance = 0.1;
+  g.problem.rotation = RotationMode::none;
+  g.problem.time_limit = 20;
+  return g;
+}
+
+TEST(Contact, PulleySlidesOffAlongTheShaftNotSideways) {
+  const auto g = pulley_on_shaft();
+  const PlanScene s = scene_of(g);
+  const PlanResult r = plan(g.problem, s);
+  ASSERT_TRUE(r.solved()) << r.message;
+  ASSERT_EQ(r.escape_segments, 1u);
+  const Vec3 pull = r.path.poses[1].translation - r.path.poses[0].translation;
+  EXPECT_EQ(pull.x(), 0.0);
+  EXPECT_EQ(pull.y(), 0.0);
+  EXPECT_GT(pull.z(), 20.0);  // off the shaft's end at z = 40
+  check_independently(s, g.problem, r);
+  // Sideways, the bore cuts the shaft: refused by the final check, and by the oracle.
+  const Path sideways{{Pose{}, Pose::from_translation(Vec3(30, 0, 0))}};
+  EXPECT_FALSE(check_path(g.problem, s, sideways).valid);
+  oracle::PathCheckInput in;
+  in.obstacles = oracle_triangles(s.obstacles);
+  in.body = oracle_triangles(s.body);
+  in.poses = {{Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()}, {Eigen::Matrix3d::Identity(), Eigen::Vector3d(30, 0, 0)}};
+  in.reference = s.reference;
+  in.clearance = g.problem.clearance;
+  in.contact_tolerance = g.problem.contact_tolerance;
+  EXPECT_FALSE(oracle::check_path(in).valid);
 }
 
 }  // namespace

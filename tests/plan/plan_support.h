@@ -58,9 +58,7 @@ inline double verify_path(const PlanScene& s, const Path& path, double margin, b
 /// What the planner said about a path, where known (the command line prints it with --json).
 struct PlannerFigures {
   std::optional<double> min_clearance;     ///< PlanResult::min_clearance
-  std::optional<std::size_t> escape_segments;
-  std::optional<std::size_t> exempt_pairs;
-  std::optional<double> escape_clearance;  ///< PlanResult::escape_clearance (+∞: no escape)
+  std::optional<std::size_t> contact_segments;  ///< escape + approach segments
 };
 
 inline std::vector<oracle::Tri> oracle_triangles(const TriangleSoup& soup) {
@@ -71,11 +69,11 @@ inline std::vector<oracle::Tri> oracle_triangles(const TriangleSoup& soup) {
 }
 
 /// The path checked by the oracle (tests/oracle): every segment certified with its own exact
-/// distances, the escape rule of docs/planner.md, and the planner's figures compared with the
-/// oracle's dense minimum.
+/// distances, the contact rule of docs/planner.md by its consequence (no two triangles reach more
+/// than the tolerance into each other), and the planner's figures compared with the oracle's
+/// dense minimum.
 ///
-/// The bound asserted on a reported minimum m (min_clearance over all pairs and segments;
-/// escape_clearance over the non-exempt pairs of the escape), with D_min the oracle's smallest
+/// The bound asserted on a reported minimum m (min_clearance over all pairs and segments), with D_min the oracle's smallest
 /// exact distance at its dense samples, h their largest spacing (motion metric) and L the
 /// longest segment:
 ///   D_min − h/2 − 1e-9  ≤  m  ≤  D_min + L/32 + 1e-9.
@@ -100,9 +98,8 @@ inline oracle::PathCheckReport check_path_independently(const PlanScene& s, cons
   std::printf("oracle: %zu x %zu triangles, %zu segments: %s, dense min %.6g (spacing %.3g), %zu certificate queries, %.0f ms\n",
               in.obstacles.size(), in.body.size(), path.poses.size() - std::min<std::size_t>(path.poses.size(), 1),
               rep.valid ? "valid" : "INVALID", rep.dense_min, rep.dense_spacing, rep.certificate_queries, ms);
-  if (rep.escape)
-    std::printf("oracle: escape from contact, %zu exempt pairs, other pairs' dense min %.6g\n", rep.exempt_pairs,
-                rep.escape_dense_min);
+  if (rep.contact_segments > 0)
+    std::printf("oracle: %zu segments in contact, deepest penetration %.6g\n", rep.contact_segments, rep.max_penetration);
   EXPECT_TRUE(rep.valid) << "the oracle refuses the path: " << rep.why;
 
   const double slack = 1e-9;
@@ -113,17 +110,7 @@ inline oracle::PathCheckReport check_path_independently(const PlanScene& s, cons
         << what << " " << m << " is more than (longest segment)/32 above the oracle's dense minimum " << dense_min;
   };
   if (figures.min_clearance) expect_within(*figures.min_clearance, rep.dense_min, "min_clearance");
-  if (figures.escape_segments) {
-    EXPECT_EQ(*figures.escape_segments, rep.escape ? 1u : 0u) << "escape segments";
-  }
-  if (rep.escape) {
-    if (figures.exempt_pairs) {
-      EXPECT_EQ(*figures.exempt_pairs, rep.exempt_pairs) << "exempt pairs";
-    }
-    if (figures.escape_clearance) expect_within(*figures.escape_clearance, rep.escape_dense_min, "escape_clearance");
-  } else if (figures.escape_clearance) {
-    EXPECT_TRUE(std::isinf(*figures.escape_clearance)) << "escape_clearance without an escape";
-  }
+  if (figures.contact_segments) EXPECT_EQ(*figures.contact_segments, rep.contact_segments) << "segments in contact";
   return rep;
 }
 
@@ -131,9 +118,7 @@ inline oracle::PathCheckReport check_path_independently(const PlanScene& s, cons
 inline oracle::PathCheckReport check_independently(const PlanScene& s, const Problem& problem, const PlanResult& r) {
   return check_path_independently(s, problem, r.path,
                                   {.min_clearance = r.min_clearance,
-                                   .escape_segments = r.escape_segments,
-                                   .exempt_pairs = r.exempt_pairs,
-                                   .escape_clearance = r.escape_clearance});
+                                   .contact_segments = r.escape_segments + r.approach_segments});
 }
 
 }  // namespace swept::test

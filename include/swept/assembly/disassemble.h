@@ -11,7 +11,6 @@
 /// per direction. Deterministic: the same assembly and options give the same result at any
 /// number of jobs (parallel work is consumed in part order).
 #include "swept/assembly/assembly.h"
-#include "swept/assembly/contact.h"
 #include "swept/geometry/pose.h"
 #include "swept/plan/problem.h"
 
@@ -21,6 +20,14 @@
 #include <vector>
 
 namespace swept {
+
+/// Two parts overlapping by more than the mating tolerance at their mounted poses.
+struct Interference {
+  std::size_t part_a = 0, part_b = 0;   ///< indices into the assembly's parts, a < b
+  double depth = 0.0;                   ///< the deepest intersecting triangle pair's pair_overlap
+  double extent = 0.0;                  ///< diagonal of the box of the intersecting triangles' crossing points
+  std::size_t triangle_pairs = 0;       ///< intersecting triangle pairs deeper than the tolerance
+};
 
 struct DisassemblyOptions {
   double clearance = 0.01;  ///< every non-mated pair keeps more than this (assembly unit)

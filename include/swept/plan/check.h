@@ -22,10 +22,11 @@ struct PathCheckOptions {
 /// One segment (waypoint i → i + 1).
 struct SegmentCheck {
   bool certified = false;  ///< the distance stays above the clearance along the whole motion
-  bool escape = false;     ///< checked with the start-contact exemption (docs/planner.md)
+  /// An end within the clearance: certified as a pull by the contact model (docs/planner.md, "The
+  /// contact model"), not by the distance certificate.
+  bool in_contact = false;
   double min_distance = std::numeric_limits<double>::infinity();  ///< smallest exact distance found, all pairs
   double t_min = 0.0;                                             ///< where (motion parameter in [0, 1])
-  double min_distance_other_pairs = std::numeric_limits<double>::infinity();  ///< escape: non-exempt pairs
   /// Not certified: where the certificate found the distance at or below the clearance, and
   /// that distance (t = −1: it gave up after its query cap without finding one).
   double t_blocked = -1.0;
@@ -47,14 +48,13 @@ struct PathCheckResult {
   std::optional<std::size_t> first_bad_segment;
   Pose first_bad_pose;
   double first_bad_distance = 0.0;
-  /// Start in contact (distance ≤ clearance, problem.contact_tolerance > 0): the first segment is
-  /// an escape, which must be a pure translation; the pairs closer than clearance + tolerance at
-  /// the start are exempt along it, and every other pair keeps the clearance.
-  std::size_t escape_segments = 0;
-  std::size_t exempt_pairs = 0;
-  double escape_clearance = std::numeric_limits<double>::infinity();  ///< non-exempt pairs, escape
+  /// Segments with an end within the clearance (problem.contact_tolerance > 0): each must be a
+  /// pure translation that the contact model certifies as a pull from that end (from its start
+  /// when both are): every pair keeps the clearance but the mates of the mate rule there, which
+  /// reach at most the contact tolerance into each other.
+  std::size_t contact_segments = 0;
   std::uint64_t distance_queries = 0;
-  std::uint64_t sweeps = 0;  ///< exact sweeps of grazing pure translations (docs/planner.md)
+  std::uint64_t sweeps = 0;  ///< exact sweeps: grazing pure translations and pulls in contact (docs/planner.md)
 };
 
 /// Certifies every segment of `path` in the problem's scene with the certificate the planner

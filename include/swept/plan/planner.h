@@ -110,22 +110,22 @@ struct PlanResult {
   double translation_length = 0.0;  ///< Σ ‖Δc‖
   double rotation_length = 0.0;     ///< Σ θ, radians
   /// Smallest exact distance found along the whole path, every segment and every triangle pair
-  /// included: ≥ the margin, except after a start in contact (then it is at most the start's
-  /// distance, and `escape_clearance` says what the escape kept).
+  /// included: ≥ the margin, except for a start or goal in contact (then it is at most that
+  /// pose's distance).
   double min_clearance = 0.0;
-  /// After a start in contact: the number of leading escape segments (0 or 1), the triangle
-  /// pairs exempt along them (closer than clearance + contact tolerance at the start), and the
-  /// smallest distance of every other pair along them (≥ the margin; +∞ without an escape).
+  /// A start in contact: the leading segments that take the body out of contact (1 or 2 pure
+  /// translations: a pull, or a slide then a pull); a goal in contact: the trailing segments of
+  /// its approach (the same, played backwards). Each is certified by the contact model
+  /// (docs/planner.md, "The contact model"); 0 for an end with the full clearance.
   std::size_t escape_segments = 0;
-  std::size_t exempt_pairs = 0;
-  double escape_clearance = std::numeric_limits<double>::infinity();
+  std::size_t approach_segments = 0;
   struct {
     double build = 0, search = 0, smooth = 0, total = 0;
   } time_ms;
   /// Queries the planner issued, the final certification included: distance queries,
-  /// proximity-pair queries (the contact pairs of a start in contact), and exact sweeps of pure
-  /// translations that graze the margin (docs/planner.md, "Certificates"). It issues no collide
-  /// or tolerance queries.
+  /// proximity-pair queries, and exact sweeps of pure translations: those that graze the margin
+  /// and the pulls in contact (docs/planner.md, "Certificates"). It issues no collide or
+  /// tolerance queries.
   struct {
     std::uint64_t distance = 0, proximity = 0, sweep = 0;
   } queries;

@@ -72,7 +72,7 @@ struct DistanceRequest {
   const TrianglePairs* exclude = nullptr;
   /// Triangle pairs left out by a rule (not owned; null: none): pairs (A's id, B's id) for which
   /// it returns true are skipped like `exclude`'s. It must be safe to call from many threads and
-  /// give the same answer for the same pair (the assembly's mate rule, swept/assembly/contact.h).
+  /// give the same answer for the same pair (the assembly's mate rule, swept/contact/mate_rule.h).
   const std::function<bool(std::uint32_t triangle_a, std::uint32_t triangle_b)>* exclude_if = nullptr;
   /// The previous query's `hint` (same two trees), or none. The distance does not depend on
   /// it (only the work does, and on a tie which closest pair is reported); a hint out of range

@@ -1,17 +1,21 @@
 #pragma once
-// Internal to swept_assembly: the parts as the sequence sees them (a tree, the triangles' planes,
-// the box) and the straight pull certified against the parts still in place (pulls.cpp).
-#include "swept/assembly/contact.h"
-#include "swept/assembly/disassemble.h"
+/// The contact layer (docs/planner.md, "The contact model"): rigid bodies as the mate rule sees
+/// them (mate_rule.h) and the one certificate of a straight pull in contact, used by the planner's
+/// escape and approach, `check_path` (`swept check`) and the assembly's pulls. Every motion that
+/// starts or ends within the clearance is certified here and nowhere else.
+#include "swept/contact/mate_rule.h"
+#include "swept/bvh/bvh.h"
+#include "swept/geometry/pose.h"
 #include "swept/query/query.h"
 
 #include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
-namespace swept::assembly_detail {
+namespace swept::contact {
 
 /// A subtree of a body's tree whose triangles lie in one plane, to the mate rule's use: every
 /// triangle's outward normal n has |n − normal| ≤ spread, and every vertex v has
@@ -21,6 +25,7 @@ struct FlatNode {
   Vec3 normal = Vec3::Zero();
   double spread = 0.0;
   double lo = 0.0, hi = 0.0;
+  bool two_sided = false;  ///< every triangle of the subtree is a sheet's (TrianglePlane::two_sided)
 };
 
 /// A cylindrical CAD face of a body (TriangleSoup::cylinders), with what the mate rule's case 4
@@ -37,13 +42,16 @@ struct BodyCylinder {
   std::vector<std::array<double, 6>> boundary;
 };
 
-/// A rigid body of the sequence: one part or a subassembly, world frame at the mounted pose.
+/// A rigid body at one pose: a part, a subassembly, a planner's obstacles or its moving body.
+/// Everything but the tree is in the world frame at that pose; the tree may be shared (the
+/// planner's) and is placed by `pose`.
 struct Body {
-  std::vector<Triangle> triangles;     ///< input order (ids of the tree)
-  std::vector<TrianglePlane> planes;   ///< plane_of(triangles[i])
-  Bvh tree;
-  std::vector<FlatNode> flat;          ///< per node of `tree`
-  Aabb box;
+  std::vector<Triangle> triangles;     ///< world frame, input order (ids of the tree)
+  std::vector<TrianglePlane> planes;   ///< part_planes of the triangles (world frame)
+  std::shared_ptr<const Bvh> tree;     ///< over the same triangles in its own frame
+  Pose pose;                           ///< the tree's frame → world
+  std::vector<FlatNode> flat;          ///< per node of `tree` (world frame)
+  Aabb box;                            ///< world frame
   /// CAD parts: per triangle the index into `cylinders` of the cylindrical face it lies on, or −1;
   /// empty when none of the body's parts has CAD faces.
   std::vector<std::int32_t> cylinder_of;
@@ -73,8 +81,8 @@ std::vector<CylinderMate> cylinder_mates(const Body& obstacle, const Body& movin
 bool cylinder_mate_allows(const std::vector<CylinderMate>& mates, const Body& obstacle, std::uint32_t a,
                           const Body& moving, std::uint32_t b, double tolerance);
 
-/// The CAD cylinders of the given parts (merged in the given order) into `body`.
-void add_cylinders(Body& body, const Assembly& assembly, const std::vector<std::size_t>& parts);
+/// The CAD cylinders of the given soups (merged in the given order, already in the world frame) into `body`.
+void add_cylinders(Body& body, const std::vector<const TriangleSoup*>& parts);
 
 /// Does the mate rule hold for every triangle pair under node `ia` of `obstacle` and node `ib` of
 /// `moving`, by its first case along a flat node's normal (a face sliding along or leaving a
@@ -82,10 +90,19 @@ void add_cylinders(Body& body, const Assembly& assembly, const std::vector<std::
 bool nodes_mate(const Body& obstacle, std::int32_t ia, const Body& moving, std::int32_t ib, const Vec3& direction,
                 double length, double tolerance);
 
-/// The body of the given parts (merged in the given order).
-Body make_body(const Assembly& assembly, const std::vector<std::size_t>& parts, const BuildConfig& config);
+/// The body of the given soups (world frame; merged in the given order), with its own tree.
+/// Creases are found soup by soup (parts of a group do not share edges).
+Body make_body(const std::vector<const TriangleSoup*>& parts, const BuildConfig& config);
+/// The body of `soup` (its tree's frame, as `tree` was built over soup.triangles) placed at
+/// `pose`: the tree is shared, not rebuilt.
+Body place_body(const TriangleSoup& soup, std::shared_ptr<const Bvh> tree, const Pose& pose);
 
-/// What the sequence needs to know of a pull.
+/// The same body moved by the translation `t` (world frame): its tree is shared.
+Body translated(const Body& body, const Vec3& t);
+
+/// What a pull is checked with: every pair keeps more than `clearance` along the whole pull,
+/// except the mates of the mate rule at the pull's start, which reach at most `tolerance` into
+/// each other.
 struct PullSettings {
   double clearance = 0.0;
   double tolerance = 0.0;
@@ -128,4 +145,4 @@ std::vector<Vec3> pull_directions(
     const Body& moving, const std::vector<const Body*>& obstacles, double threshold,
     const std::function<const std::vector<ContactFacet>*(const Body& obstacle)>& contacts = nullptr);
 
-}  // namespace swept::assembly_detail
+}  // namespace swept::contact

@@ -1,5 +1,6 @@
 #pragma once
-/// The contact model of mounted parts (docs/planner.md, "Assemblies: the contact model").
+/// The mate rule of the contact model (docs/planner.md, "The contact model"): which triangle
+/// pairs may stay within the clearance along a straight pull from a pose in contact.
 ///
 /// Parts touch where they mate: planar faces face to face, a shaft in a bore of the same radius,
 /// tessellations of two mating surfaces that overlap by up to the meshing deflection. The model
@@ -62,6 +63,9 @@ struct TrianglePlane {
   Vec3 normal = Vec3::Zero();
   double offset = 0.0;
   std::uint8_t creases = 0;
+  /// A triangle of an open surface (a sheet: its connected part has an edge of one triangle),
+  /// which has no inside: the rule takes its normal with either sign.
+  bool two_sided = false;
 };
 /// The plane of one triangle, without crease edges (they need the part: part_planes()).
 TrianglePlane plane_of(const Triangle& t);
@@ -70,7 +74,9 @@ TrianglePlane plane_of(const Triangle& t);
 /// vertex coordinates) shared with exactly one other triangle whose plane has this triangle's
 /// third vertex behind it by more than 1e-9 of the edge's length (a convex dihedral). Edges
 /// between coplanar triangles, concave edges, and open or non-manifold edges (vertices that do not
-/// match exactly) are not creases: fewer axes, fewer mates, the conservative side. Deterministic.
+/// match exactly) are not creases: fewer axes, fewer mates, the conservative side. A triangle whose
+/// connected part (through edges shared by exactly two triangles, or more) has an edge of one
+/// triangle is `two_sided`. Deterministic.
 std::vector<TrianglePlane> part_planes(const std::vector<Triangle>& triangles);
 
 /// How far `b` reaches behind the plane of `a` (−(min over b's vertices of n_a·v − offset_a)):
@@ -86,12 +92,5 @@ bool mate_allows(const Triangle& o, const TrianglePlane& po, const Triangle& p, 
 /// separating axes above (a as o, b as p); ≤ 0 when they are apart.
 double pair_overlap(const Triangle& a, const TrianglePlane& pa, const Triangle& b, const TrianglePlane& pb);
 
-/// Two parts overlapping by more than the mating tolerance at their mounted poses.
-struct Interference {
-  std::size_t part_a = 0, part_b = 0;   ///< indices into the assembly's parts, a < b
-  double depth = 0.0;                   ///< the deepest intersecting triangle pair's pair_overlap
-  double extent = 0.0;                  ///< diagonal of the box of the intersecting triangles' crossing points
-  std::size_t triangle_pairs = 0;       ///< intersecting triangle pairs deeper than the tolerance
-};
 
 }  // namespace swept

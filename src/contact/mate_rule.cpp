@@ -1,5 +1,5 @@
-// The mate rule of the contact model (contact.h): separating axes of two triangles.
-#include "swept/assembly/contact.h"
+// The mate rule of the contact model (mate_rule.h): separating axes of two triangles.
+#include "swept/contact/mate_rule.h"
 
 #include <algorithm>
 #include <array>
@@ -77,6 +77,12 @@ double clipped_depth(const Triangle& a, const TrianglePlane& pa, const Triangle&
 bool slides_clear(const Triangle& a, const TrianglePlane& pa, const Triangle& b, const Vec3& d, double length,
                   double tolerance) {
   if (pa.normal.isZero()) return false;
+  if (pa.two_sided) {  // a sheet: b may slide along either side
+    TrianglePlane back = pa;
+    back.normal = -pa.normal, back.offset = -pa.offset, back.two_sided = false;
+    back.creases = 0;
+    if (slides_clear(a, back, b, d, length, tolerance)) return true;
+  }
   const double along = pa.normal.dot(d);
   if (std::abs(along) > 0.05) return false;
   const Vec3 u = pa.normal.cross(d);
@@ -108,6 +114,10 @@ int axes_of(const Triangle& o, const TrianglePlane& po, const Triangle& p, const
   const Vec3& np = pp.normal;
   if (!no.isZero()) out[n++] = no;
   if (!np.isZero()) out[n++] = -np;
+  // A sheet has no inside: either side of it.
+  if (po.two_sided && !no.isZero()) out[n++] = -no;
+  if (pp.two_sided && !np.isZero()) out[n++] = np;
+  const bool either = po.two_sided || pp.two_sided;
   Vec3 eo[3], ep[3];
   int co = 0, cp = 0;
   for (int i = 0; i < 3; ++i) {
@@ -134,8 +144,8 @@ int axes_of(const Triangle& o, const TrianglePlane& po, const Triangle& p, const
       if (!(len > 1e-9 * eo[i].norm() * ep[j].norm()) || !(len > 1e-300)) continue;
       const Vec3 m = c / len;
       const double side = m.dot(outward);
-      if (side >= -1e-12) out[n++] = m;
-      if (side <= 1e-12) out[n++] = -m;
+      if (either || side >= -1e-12) out[n++] = m;
+      if (either || side <= 1e-12) out[n++] = -m;
     }
   return n;
 }
@@ -167,6 +177,22 @@ std::vector<TrianglePlane> part_planes(const std::vector<Triangle>& triangles) {
   std::map<Key, std::vector<std::pair<std::uint32_t, int>>> edges;
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) edges[key(triangles[t][i], triangles[t][(i + 1) % 3])].push_back({t, i});
+  // Connected parts (union-find over shared edges) and which of them are open.
+  std::vector<std::uint32_t> root(triangles.size());
+  for (std::uint32_t t = 0; t < root.size(); ++t) root[t] = t;
+  auto find = [&](std::uint32_t t) {
+    while (root[t] != t) t = root[t] = root[root[t]];
+    return t;
+  };
+  for (const auto& [k, uses] : edges)
+    for (std::size_t u = 1; u < uses.size(); ++u) {
+      const std::uint32_t a = find(uses[0].first), b = find(uses[u].first);
+      if (a != b) root[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<bool> open(triangles.size(), false);
+  for (const auto& [k, uses] : edges)
+    if (uses.size() == 1) open[find(uses[0].first)] = true;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) planes[t].two_sided = open[find(t)];
   for (const auto& [k, uses] : edges) {
     // Open or non-manifold edges (vertices that do not match exactly) are no creases: fewer axes,
     // so fewer pairs are mates: the conservative side.

@@ -1,6 +1,6 @@
-// Straight pulls of a part (or subassembly) out of the parts still in place (parts.h): the
-// directions of local freedom, the length to leave the box, and the certificate with the mate rule.
-#include "parts.h"
+// Straight pulls of a body out of its contacts (contact.h): the directions of local freedom, the
+// length to leave the box, and the certificate with the mate rule.
+#include "swept/contact/contact.h"
 
 #include "swept/geometry/assert.h"
 #include "swept/query/motion.h"
@@ -12,7 +12,7 @@
 #include <limits>
 #include <map>
 
-namespace swept::assembly_detail {
+namespace swept::contact {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -31,7 +31,9 @@ void add_unique(std::vector<Vec3>& out, const Vec3& v) {
 // rounding; a curved face's facets do not (and its nodes are left to the triangles).
 constexpr double kFlatSpread = 1e-6;
 
-std::vector<FlatNode> flat_nodes(const Bvh& tree, const std::vector<TrianglePlane>& planes) {
+// Over the world-frame triangles and planes of the tree's input ids.
+std::vector<FlatNode> flat_nodes(const Bvh& tree, const std::vector<Triangle>& triangles,
+                                 const std::vector<TrianglePlane>& planes) {
   const std::size_t n = tree.nodes.size();
   std::vector<FlatNode> out(n);
   std::vector<std::pair<std::int32_t, std::int32_t>> range(n);  // triangles of the subtree
@@ -54,13 +56,16 @@ std::vector<FlatNode> flat_nodes(const Bvh& tree, const std::vector<TrianglePlan
     if (f.normal.isZero()) continue;
     f.lo = kInf;
     f.hi = -kInf;
+    f.two_sided = true;
     bool flat = true;
     for (std::int32_t i = b; i < e && flat; ++i) {
-      const Vec3& m = planes[tree.triangle_ids[i]].normal;
+      const std::uint32_t id = tree.triangle_ids[i];
+      const Vec3& m = planes[id].normal;
+      f.two_sided = f.two_sided && planes[id].two_sided;
       f.spread = std::max(f.spread, (m - f.normal).norm());
       flat = !m.isZero() && f.spread <= kFlatSpread;
       for (int v = 0; v < 3; ++v) {
-        const double x = f.normal.dot(tree.triangles[i][v]);
+        const double x = f.normal.dot(triangles[id][v]);
         f.lo = std::min(f.lo, x);
         f.hi = std::max(f.hi, x);
       }
@@ -75,6 +80,29 @@ std::vector<FlatNode> flat_nodes(const Bvh& tree, const std::vector<TrianglePlan
 double rss_min_along(const Rss& r, const Vec3& n) {
   return n.dot(r.center) - r.half_length[0] * std::abs(n.dot(r.axes.col(0))) -
          r.half_length[1] * std::abs(n.dot(r.axes.col(1))) - r.radius;
+}
+
+// An RSS of a tree placed at `pose` (tree frame → world).
+Rss placed(Rss r, const Pose& pose) {
+  r.center = pose.apply(r.center);
+  r.axes = pose.rotation * r.axes;
+  return r;
+}
+
+// planes, box and flat nodes of a body whose triangles (world frame) and tree are set; creases
+// soup by soup over `sizes` consecutive runs of triangles.
+void finish_body(Body& b, const std::vector<std::size_t>& sizes) {
+  std::size_t at = 0;
+  for (std::size_t n : sizes) {
+    const std::vector<Triangle> part(b.triangles.begin() + static_cast<std::ptrdiff_t>(at),
+                                     b.triangles.begin() + static_cast<std::ptrdiff_t>(at + n));
+    const auto planes = part_planes(part);
+    b.planes.insert(b.planes.end(), planes.begin(), planes.end());
+    at += n;
+  }
+  for (const Triangle& t : b.triangles)
+    for (int v = 0; v < 3; ++v) b.box.extend(t[v]);
+  b.flat = flat_nodes(*b.tree, b.triangles, b.planes);
 }
 
 }  // namespace
@@ -97,8 +125,8 @@ double box_gap(const Aabb& a, const Aabb& b) {
 
 bool nodes_mate(const Body& obstacle, std::int32_t ia, const Body& moving, std::int32_t ib, const Vec3& d,
                 double length, double tolerance) {
-  const Rss ra = obstacle.tree.bv(static_cast<std::size_t>(ia));
-  const Rss rb = moving.tree.bv(static_cast<std::size_t>(ib));
+  const Rss ra = placed(obstacle.tree->bv(static_cast<std::size_t>(ia)), obstacle.pose);
+  const Rss rb = placed(moving.tree->bv(static_cast<std::size_t>(ib)), moving.pose);
   auto reach = [](const Rss& r) { return r.half_length[0] + r.half_length[1] + r.radius; };
   // Any two points of the pair are at most this far apart; the same bound, 1e-9 of it, covers rounding.
   const double span = (ra.center - rb.center).norm() + reach(ra) + reach(rb);
@@ -109,34 +137,73 @@ bool nodes_mate(const Body& obstacle, std::int32_t ia, const Body& moving, std::
   if (fa.flat) {
     const double gap = rss_min_along(rb, fa.normal) - fa.hi - fa.spread * span;
     if (gap + length * std::min(0.0, fa.normal.dot(d) - fa.spread) >= -tolerance + slack) return true;
+    // A sheet: the other side, m = −n.
+    const double back = rss_min_along(rb, -fa.normal) + fa.lo - fa.spread * span;
+    if (fa.two_sided && back + length * std::min(0.0, -fa.normal.dot(d) - fa.spread) >= -tolerance + slack) return true;
   }
   // ... and with m = −(p's normal) n, for every p under ib: min_o n·w − max_p n·v, and −n·d.
   const FlatNode& fb = moving.flat[static_cast<std::size_t>(ib)];
   if (fb.flat) {
     const double gap = rss_min_along(ra, fb.normal) - fb.hi - fb.spread * span;
     if (gap + length * std::min(0.0, -fb.normal.dot(d) - fb.spread) >= -tolerance + slack) return true;
+    const double back = rss_min_along(ra, -fb.normal) + fb.lo - fb.spread * span;
+    if (fb.two_sided && back + length * std::min(0.0, fb.normal.dot(d) - fb.spread) >= -tolerance + slack) return true;
   }
   return false;
 }
 
-Body make_body(const Assembly& assembly, const std::vector<std::size_t>& parts, const BuildConfig& config) {
+Body make_body(const std::vector<const TriangleSoup*>& parts, const BuildConfig& config) {
   Body b;
-  for (std::size_t i : parts) {
-    const auto& t = assembly.parts[i].mesh.triangles;
-    b.triangles.insert(b.triangles.end(), t.begin(), t.end());
+  std::vector<std::size_t> sizes;
+  for (const TriangleSoup* p : parts) {
+    b.triangles.insert(b.triangles.end(), p->triangles.begin(), p->triangles.end());
+    sizes.push_back(p->triangles.size());
   }
-  // Creases are found part by part (parts of a group do not share edges).
-  for (std::size_t i : parts) {
-    const auto planes = part_planes(assembly.parts[i].mesh.triangles);
-    b.planes.insert(b.planes.end(), planes.begin(), planes.end());
-  }
-  for (const Triangle& t : b.triangles)
-    for (int v = 0; v < 3; ++v) b.box.extend(t[v]);
   auto tree = build_bvh(b.triangles, config);
-  SWEPT_ASSERT(tree.ok(), "read_assembly refuses empty parts and non-finite coordinates");
-  b.tree = std::move(*tree);
-  b.flat = flat_nodes(b.tree, b.planes);
-  add_cylinders(b, assembly, parts);
+  SWEPT_ASSERT(tree.ok(), "bodies are made of checked, non-empty parts");
+  b.tree = std::make_shared<const Bvh>(std::move(*tree));
+  finish_body(b, sizes);
+  add_cylinders(b, parts);
+  return b;
+}
+
+Body place_body(const TriangleSoup& soup, std::shared_ptr<const Bvh> tree, const Pose& pose) {
+  Body b;
+  b.tree = std::move(tree);
+  b.pose = pose;
+  b.triangles.reserve(soup.triangles.size());
+  for (const Triangle& t : soup.triangles) b.triangles.push_back({pose.apply(t.p), pose.apply(t.q), pose.apply(t.r)});
+  finish_body(b, {soup.triangles.size()});
+  TriangleSoup placed_soup;
+  placed_soup.cylinder_of = soup.cylinder_of;
+  placed_soup.triangles = b.triangles;
+  for (CadCylinder c : soup.cylinders) {
+    c.origin = pose.apply(c.origin);
+    c.axis = pose.rotation * c.axis;
+    placed_soup.cylinders.push_back(c);
+  }
+  add_cylinders(b, {&placed_soup});
+  return b;
+}
+
+Body translated(const Body& body, const Vec3& t) {
+  Body b = body;
+  b.pose.translation += t;
+  for (Triangle& x : b.triangles) x.p += t, x.q += t, x.r += t;
+  for (TrianglePlane& p : b.planes) p.offset += p.normal.dot(t);
+  for (FlatNode& f : b.flat)
+    if (f.flat) f.lo += f.normal.dot(t), f.hi += f.normal.dot(t);
+  if (!b.box.empty()) b.box.min += t, b.box.max += t;
+  for (BodyCylinder& c : b.cylinders) {
+    c.surface.origin += t;
+    // The same additions as the triangles' vertices: the rim's keys still match them exactly.
+    for (auto& e : c.boundary) {
+      for (int k = 0; k < 3; ++k) e[k] += t[k], e[k + 3] += t[k];
+      if (std::lexicographical_compare(e.begin() + 3, e.end(), e.begin(), e.begin() + 3))
+        std::swap_ranges(e.begin(), e.begin() + 3, e.begin() + 3);
+    }
+    std::sort(c.boundary.begin(), c.boundary.end());
+  }
   return b;
 }
 
@@ -194,7 +261,7 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
     const std::vector<ContactFacet>* known = contacts ? contacts(*o) : nullptr;
     std::vector<ContactFacet> found;
     if (!known)
-      found = contact_facets(proximity_pairs(o->tree, Pose{}, moving.tree, Pose{}, {.threshold = threshold}).pairs,
+      found = contact_facets(proximity_pairs(*o->tree, o->pose, *moving.tree, moving.pose, {.threshold = threshold}).pairs,
                              o->triangles.size(), moving.triangles.size());
     for (const ContactFacet& f : known ? *known : found) {
       if (f.moving) add(-moving.planes[f.triangle].normal, moving.triangles[f.triangle]);
@@ -250,7 +317,7 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
       return nodes_mate(*o, a, moving, b, d, length, tol);
     };
     ++queries;
-    const SweepResult r = sweep_translation(o->tree, Pose{}, moving.tree, Pose{},
+    const SweepResult r = sweep_translation(*o->tree, o->pose, *moving.tree, moving.pose,
                                             {.translation = length * d, .margin = settings.clearance,
                                              .exclude_if = &mates, .exclude_nodes_if = &node_mates});
     if (!r.clear) {
@@ -261,4 +328,4 @@ bool pull_is_clear(const Body& moving, const std::vector<const Body*>& obstacles
   return true;
 }
 
-}  // namespace swept::assembly_detail
+}  // namespace swept::contact

@@ -1,8 +1,8 @@
-// Case 4 of the mate rule (contact.h): a shaft slides along its bore by the CAD's cylinders, not
+// Case 4 of the mate rule (mate_rule.h): a shaft slides along its bore by the CAD's cylinders, not
 // by their facets. Under a pull along a cylinder's axis every point keeps its distance from the
 // axis (up to the pull's drift), so two triangles whose distances from it do not overlap by more
 // than the tolerance never reach further into each other, wherever they are along the axis.
-#include "parts.h"
+#include "swept/contact/contact.h"
 
 #include "swept/geometry/distance.h"
 
@@ -11,7 +11,7 @@
 #include <limits>
 #include <utility>
 
-namespace swept::assembly_detail {
+namespace swept::contact {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -96,12 +96,12 @@ double radial_floor(const Body& outer, std::uint32_t k, const Vec3& o, const Vec
 
 }  // namespace
 
-void add_cylinders(Body& body, const Assembly& assembly, const std::vector<std::size_t>& parts) {
+void add_cylinders(Body& body, const std::vector<const TriangleSoup*>& parts) {
   bool any = false;
-  for (std::size_t i : parts) any = any || !assembly.parts[i].mesh.cylinders.empty();
+  for (const TriangleSoup* m : parts) any = any || !m->cylinders.empty();
   if (!any) return;
-  for (std::size_t i : parts) {
-    const TriangleSoup& m = assembly.parts[i].mesh;
+  for (const TriangleSoup* part : parts) {
+    const TriangleSoup& m = *part;
     const auto base = static_cast<std::int32_t>(body.cylinders.size());
     if (m.cylinder_of.empty()) {
       body.cylinder_of.insert(body.cylinder_of.end(), m.triangles.size(), -1);
@@ -177,4 +177,4 @@ bool cylinder_mate_allows(const std::vector<CylinderMate>& mates, const Body& ob
   return false;
 }
 
-}  // namespace swept::assembly_detail
+}  // namespace swept::contact
