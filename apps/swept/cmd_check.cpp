@@ -1,6 +1,7 @@
 // `swept check`: certifies a path (ours or OMPL's `.path`, from swept or any other planner)
 // against a problem with the certificate the planner uses (swept::check_path).
 #include "commands.h"
+#include "part_source.h"
 #include "output.h"
 
 #include "swept/plan/check.h"
@@ -18,7 +19,7 @@ namespace swept::cli {
 namespace {
 
 struct CheckCliOptions {
-  std::string problem;
+  ProblemSource source;  ///< the problem file, or an assembly's part (--part)
   std::string path;
   double clearance = -1.0;
   std::string reference;
@@ -75,13 +76,14 @@ std::string pose_text(const Pose& p) {
 }
 
 void run(const CheckCliOptions& o) {
-  auto problem = load_problem(o.problem);
-  if (!problem) throw std::runtime_error(problem.error().message);
   auto path = read_path(o.path);
   if (!path) throw std::runtime_error(path.error().message);
   if (path->poses.empty()) throw std::runtime_error(o.path + ": the path has no poses");
-  auto scene = load_scene(*problem, problem->build);
-  if (!scene) throw std::runtime_error(scene.error().message);
+  ProblemSource source = o.source;
+  if (o.clearance >= 0) source.clearance = o.clearance;
+  PartProblem loaded = load_problem_source(source);
+  const Problem* problem = &loaded.problem;
+  const PlanScene* scene = &loaded.scene;
   PathCheckOptions options;
   if (o.clearance >= 0) options.clearance = o.clearance;
   options.reference_point = reference_of(o, *problem, *scene);
@@ -119,7 +121,7 @@ void run(const CheckCliOptions& o) {
     }
     std::cout << json_text(doc, 2) << "\n";
   } else {
-    std::cout << std::setprecision(6) << "problem      " << o.problem << "\n"
+    std::cout << std::setprecision(6) << "problem      " << o.source.file << "\n"
               << "path         " << o.path << ": " << path->poses.size() << " waypoints\n";
     for (const std::string& w : scene->warnings) std::cout << "warning      " << w << "\n";
     std::cout
@@ -148,7 +150,10 @@ void add_check_command(CLI::App& app) {
       "the clearance along the whole continuous motion (position linear, rotation slerp about the\n"
       "reference point). Prints the minimum clearance and where, and the first pose where the path\n"
       "comes too close or collides. Exit 0: valid; 2: not valid; 1: bad input.");
-  cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
+  cmd->add_option("problem", o->source.file,
+                  "Problem file (.toml or OMPL.app .cfg), or with --part an assembly (as swept disassemble reads it)")
+      ->required();
+  add_part_options(*cmd, o->source);
   cmd->add_option("path", o->path, "Path file: our JSON, or OMPL .path (x y z qx qy qz qw per line, or OMPL's printed SE(3) states as OMPL.app ships its paths)")->required();
   cmd->add_option("--clearance", o->clearance, "Required clearance (default: the problem's)")
       ->check(CLI::NonNegativeNumber);

@@ -1,6 +1,7 @@
 // `swept plan`: a certified, deterministic disassembly path for a problem file.
 #include "cli_options.h"
 #include "commands.h"
+#include "part_source.h"
 #include "output.h"
 
 #include "swept/plan/planner.h"
@@ -31,6 +32,7 @@ struct PlanCliOptions {
   std::string view;
   bool json = false;
   bool quiet = false;
+  ProblemSource source;  ///< the problem file, or an assembly's part (--part)
 };
 
 std::string hex(std::uint64_t h) {
@@ -40,15 +42,14 @@ std::string hex(std::uint64_t h) {
 }
 
 void run(const PlanCliOptions& o) {
-  auto problem = load_problem(o.problem);
-  if (!problem) throw std::runtime_error(problem.error().message);
-  if (!o.fitter.empty()) problem->build.fitter = fitters_from(o.fitter, false).front();
+  ProblemSource source = o.source;
+  if (!o.fitter.empty()) source.fitter = fitters_from(o.fitter, false).front();
+  PartProblem loaded = load_problem_source(source);
+  Problem* problem = &loaded.problem;
+  const PlanScene* scene = &loaded.scene;
   if (o.time_limit > 0) problem->time_limit = o.time_limit;
   if (o.threads >= 0) problem->threads = o.threads;
   if (o.seed) problem->seed = *o.seed;
-
-  auto scene = load_scene(*problem, problem->build);
-  if (!scene) throw std::runtime_error(scene.error().message);
 
   PlanOptions options;
   if (o.max_queries > 0) options.max_queries = o.max_queries;
@@ -79,7 +80,7 @@ void run(const PlanCliOptions& o) {
 
   if (r.status == PlanStatus::invalid_start || r.status == PlanStatus::invalid_goal ||
       r.status == PlanStatus::invalid_bounds)
-    throw std::runtime_error(o.problem + ": " + r.message);
+    throw std::runtime_error(o.source.file + ": " + r.message);
 
   if (r.solved() && !o.output.empty()) {
     auto w = write_path(o.output, r.path, problem->unit, scene->reference);
@@ -117,7 +118,7 @@ void run(const PlanCliOptions& o) {
         {"edges_checked", r.edges_checked}};
     std::cout << json_text(doc, 2) << "\n";
   } else {
-    std::cout << "problem      " << o.problem << "\n";
+    std::cout << "problem      " << o.source.file << "\n";
     for (const std::string& note : problem->notes) std::cout << "note         " << note << "\n";
     for (const std::string& w : scene->warnings) std::cout << "warning      " << w << "\n";
     std::cout << "meshes       obstacles " << scene->obstacles.triangles.size() << " triangles, body "
@@ -164,7 +165,12 @@ void add_plan_command(CLI::App& app) {
       "docs/problem-format.md, or an OMPL.app .cfg). Every segment keeps the clearance margin along\n"
       "the whole continuous motion. Exit 0: solved; 2: no path within the limits (the message says\n"
       "which: time, query budget, bounds or resolution); 1: bad input.");
-  cmd->add_option("problem", o->problem, "Problem file (.toml or OMPL.app .cfg)")->required();
+  cmd->add_option("problem", o->source.file,
+                  "Problem file (.toml or OMPL.app .cfg), or with --part an assembly (as swept disassemble reads it)")
+      ->required();
+  add_part_options(*cmd, o->source);
+  cmd->add_option("--clearance", o->source.clearance, "With --part: the clearance every non-mated pair keeps (default 0.01)")
+      ->check(CLI::NonNegativeNumber);
   add_fitter_option(*cmd, o->fitter, "Override the fitter", false);
   cmd->add_option("--time-limit", o->time_limit, "Override the time limit, seconds")->check(CLI::PositiveNumber);
   cmd->add_option("--max-queries", o->max_queries,

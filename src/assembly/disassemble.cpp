@@ -264,41 +264,23 @@ class Sequencer {
     return at;
   }
 
-  // The planner with the others as obstacles (its escape from contact exempts the pairs that
-  // touch at the mounted pose, pair by pair; docs/planner.md).
+  // The planner with the others as obstacles (part_problem), under the contact model.
   Attempt try_plan(const std::vector<std::size_t>& group, const std::vector<std::size_t>& remaining) {
     Attempt at;
-    TriangleSoup obstacles, body;
-    for (std::size_t i : remaining) {
-      const auto& t = a_.parts[i].mesh.triangles;
-      auto& to = std::find(group.begin(), group.end(), i) == group.end() ? obstacles : body;
-      to.triangles.insert(to.triangles.end(), t.begin(), t.end());
-    }
-    if (obstacles.triangles.empty()) return at;
-    Aabb box;
-    for (const Triangle& t : body.triangles)
-      for (int v = 0; v < 3; ++v) box.extend(t[v]);
-    auto scene = make_scene(std::move(obstacles), std::move(body), {}, box.center());
-    if (!scene) return at;
-    Problem p;
-    p.unit = a_.unit;
-    p.start = Pose{};
-    p.goal_outside = true;
-    p.clearance = settings_.clearance;
-    p.contact_tolerance = settings_.tolerance;
-    p.rotation = RotationMode::free;
-    p.time_limit = o_.plan_time_limit;
-    p.threads = 1;
+    DisassemblyOptions o = o_;
+    o.tolerance = settings_.tolerance;
+    auto pp = part_problem(a_, group, remaining, o);
+    if (!pp) return at;
     PlanOptions options;
     options.threads = 1;
     if (o_.plan_max_queries > 0) options.max_queries = o_.plan_max_queries;
-    const PlanResult r = plan(p, *scene, options);
+    const PlanResult r = plan(pp->problem, pp->scene, options);
     queries_ += r.queries.distance;
     if (!r.solved()) return at;
     at.removed = true;
     at.method = RemovalMethod::plan;
     at.path = r.path;
-    at.reference = scene->reference;
+    at.reference = pp->scene.reference;
     at.distance = r.path_length;
     return at;
   }
@@ -348,6 +330,51 @@ class Sequencer {
 };
 
 }  // namespace
+
+Result<PartProblem> part_problem(const Assembly& assembly, const std::vector<std::size_t>& group,
+                                 const std::vector<std::size_t>& present, const DisassemblyOptions& options) {
+  TriangleSoup obstacles, body;
+  auto add = [](TriangleSoup& to, const TriangleSoup& from) {
+    if (!from.cylinders.empty() || !to.cylinder_of.empty()) {
+      to.cylinder_of.resize(to.triangles.size(), -1);
+      const auto base = static_cast<std::int32_t>(to.cylinders.size());
+      if (from.cylinder_of.empty()) to.cylinder_of.insert(to.cylinder_of.end(), from.triangles.size(), -1);
+      for (std::int32_t f : from.cylinder_of) to.cylinder_of.push_back(f < 0 ? -1 : base + f);
+      to.cylinders.insert(to.cylinders.end(), from.cylinders.begin(), from.cylinders.end());
+    }
+    to.triangles.insert(to.triangles.end(), from.triangles.begin(), from.triangles.end());
+    to.name += (to.name.empty() ? "" : "+") + from.name;
+  };
+  for (std::size_t i : present) {
+    const bool moving = std::find(group.begin(), group.end(), i) != group.end();
+    add(moving ? body : obstacles, assembly.parts[i].mesh);
+  }
+  if (obstacles.triangles.empty()) return Error{"no part stays in place: there is nothing to take it out of"};
+  if (body.triangles.empty()) return Error{"no part to move"};
+  Aabb box = bounds(body.triangles);
+  auto scene = make_scene(std::move(obstacles), std::move(body), {}, box.center());
+  if (!scene) return scene.error();
+  PartProblem out{{}, std::move(*scene)};
+  Problem& p = out.problem;
+  p.source = assembly.source;
+  p.unit = assembly.unit;
+  p.start = Pose{};
+  p.goal_outside = true;
+  p.clearance = options.clearance;
+  p.contact_tolerance = options.tolerance > 0 ? options.tolerance : 2.0 * ImportOptions{}.linear_deflection;
+  p.rotation = RotationMode::free;
+  p.time_limit = options.plan_time_limit > 0 ? options.plan_time_limit : p.time_limit;
+  p.threads = 1;
+  return out;
+}
+
+Result<std::size_t> find_part(const Assembly& assembly, const std::string& name) {
+  for (std::size_t i = 0; i < assembly.parts.size(); ++i)
+    if (assembly.parts[i].name == name) return i;
+  std::string known;
+  for (const AssemblyPart& part : assembly.parts) known += (known.empty() ? "" : ", ") + part.name;
+  return Error{assembly.source.string() + ": no part named '" + name + "' (its parts: " + known + ")"};
+}
 
 DisassemblyResult disassemble(const Assembly& assembly, const DisassemblyOptions& options) {
   const double tolerance = options.tolerance > 0 ? options.tolerance : 2.0 * ImportOptions{}.linear_deflection;

@@ -12,6 +12,7 @@
 /// number of jobs (parallel work is consumed in part order).
 #include "swept/assembly/assembly.h"
 #include "swept/geometry/pose.h"
+#include "swept/plan/planner.h"
 #include "swept/plan/problem.h"
 
 #include <cstdint>
@@ -90,6 +91,21 @@ std::vector<Interference> find_interferences(const Assembly& assembly, double to
 
 /// The disassembly sequence. Parts in an interference are not exempted: they simply block each
 /// other (the interference is reported first).
+/// The problem of taking `group` (indices) out of the parts `present` (the others stay as
+/// obstacles): the group is the body, its frame the world's (start: its mounted pose, the
+/// identity), the goal outside the obstacles' box, any rotation, the clearance and contact
+/// tolerance of `options` (tolerance ≤ 0: the default of DisassemblyOptions), the CAD's cylinders
+/// kept for the contact model. What `swept plan ASSEMBLY --part NAME` and the planner fallback of
+/// `disassemble` plan. An error when no part stays as an obstacle.
+struct PartProblem {
+  Problem problem;
+  PlanScene scene;
+};
+Result<PartProblem> part_problem(const Assembly& assembly, const std::vector<std::size_t>& group,
+                                 const std::vector<std::size_t>& present, const DisassemblyOptions& options);
+/// The part named `name` (as `swept disassemble` prints it), or an error listing the names.
+Result<std::size_t> find_part(const Assembly& assembly, const std::string& name);
+
 DisassemblyResult disassemble(const Assembly& assembly, const DisassemblyOptions& options = {});
 
 }  // namespace swept
