@@ -130,7 +130,7 @@ void run(const CheckCliOptions& o) {
               << ") in segment " << r.min_segment << " at t = " << r.min_t << "\n";
     if (r.contact_segments > 0)
       std::cout << "contact      " << r.contact_segments << (r.contact_segments == 1 ? " segment" : " segments")
-                << " with an end in contact, certified as pulls by the mate rule (tolerance " << problem->contact_tolerance
+                << " with an end in contact, each certified as a pull by the mate rule (tolerance " << problem->contact_tolerance
                 << " " << problem->unit << ")\n";
     if (r.first_bad_segment)
       std::cout << "first bad    segment " << *r.first_bad_segment << ": distance " << r.first_bad_distance

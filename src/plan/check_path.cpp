@@ -167,8 +167,9 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     if (segments == 1) os << "valid: the one segment keeps the clearance " << margin;
     else os << "valid: every one of the " << segments << " segments keeps the clearance " << margin;
     if (out.contact_segments > 0)
-      os << " (" << out.contact_segments << (out.contact_segments == 1 ? " segment" : " segments")
-         << " in contact certified as pulls by the mate rule, tolerance " << problem.contact_tolerance << ")";
+      os << " (" << out.contact_segments << (out.contact_segments == 1 ? " segment in contact, certified as a pull"
+                                                                       : " segments in contact, each certified as a pull")
+         << " by the mate rule, tolerance " << problem.contact_tolerance << ")";
   } else {
     const std::size_t i = *out.first_bad_segment;
     const SegmentCheck& sc = out.segments[i];
