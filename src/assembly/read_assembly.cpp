@@ -264,12 +264,7 @@ Result<Assembly> read_assembly(const fs::path& path, const AssemblyReadOptions& 
     // The CAD's cylinders only add mates (contact.h): where they are not what the contact model
     // can trust (a count that does not match, a degenerate surface), the part goes without them.
     TriangleSoup& m = part.mesh;
-    bool usable = m.cylinder_of.size() == m.triangles.size();
-    for (const CadCylinder& c : m.cylinders)
-      usable = usable && c.origin.allFinite() && c.axis.allFinite() && std::abs(c.axis.norm() - 1.0) < 1e-9 &&
-               std::isfinite(c.radius) && c.radius > 0.0 && std::isfinite(c.deviation) && c.deviation >= 0.0;
-    for (std::int32_t k : m.cylinder_of) usable = usable && k >= -1 && k < static_cast<std::int32_t>(m.cylinders.size());
-    if (!usable) m.cylinder_of.clear(), m.cylinders.clear();
+    if (!cylinders_usable(m)) m.cylinder_of.clear(), m.cylinders.clear();
   }
   for (std::size_t i = 0; i < a.parts.size(); ++i) {
     const AssemblyPart& p = a.parts[i];

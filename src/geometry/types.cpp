@@ -35,4 +35,14 @@ Aabb bounds(const std::vector<Triangle>& triangles) {
   return box;
 }
 
+bool cylinders_usable(const TriangleSoup& m) {
+  if (m.cylinders.empty() && m.cylinder_of.empty()) return true;
+  bool usable = m.cylinder_of.size() == m.triangles.size();
+  for (const CadCylinder& c : m.cylinders)
+    usable = usable && c.origin.allFinite() && c.axis.allFinite() && std::abs(c.axis.norm() - 1.0) < 1e-9 &&
+             std::isfinite(c.radius) && c.radius > 0.0 && std::isfinite(c.deviation) && c.deviation >= 0.0;
+  for (std::int32_t k : m.cylinder_of) usable = usable && k >= -1 && k < static_cast<std::int32_t>(m.cylinders.size());
+  return usable;
+}
+
 }  // namespace swept

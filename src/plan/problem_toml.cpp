@@ -97,6 +97,18 @@ struct TomlReader {
     return true;
   }
 
+  bool strings(const toml::node* n, const std::string& key, std::vector<std::string>& out) {
+    if (!n) return true;
+    const auto* a = n->as_array();
+    if (!a) return fail(*n, key, "must be an array of strings");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const auto* v = a->get(i)->as_string();
+      if (!v) return fail(*a->get(i), key + "[" + std::to_string(i) + "]", "must be a string");
+      out.push_back(v->get());
+    }
+    return true;
+  }
+
   bool boolean(const toml::node* n, const std::string& key, bool& out) {
     if (!n) return true;
     const auto* v = n->as_boolean();
@@ -230,8 +242,8 @@ Result<Problem> load_toml(const fs::path& file) {
     if (!arr) return r.fail(*n, key, "must be an array of tables: write [[" + std::string(key) + "]]");
     for (std::size_t i = 0; i < arr->size(); ++i) {
       const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
-      const toml::table* t = r.table(arr->get(i), where, "a table with file (and file_unit, deflection, pose)");
-      if (!t || !r.keys(*t, where + ".", {"file", "file_unit", "deflection", "pose"})) return false;
+      const toml::table* t = r.table(arr->get(i), where, "a table with file (and file_unit, deflection, pose, part or except)");
+      if (!t || !r.keys(*t, where + ".", {"file", "file_unit", "deflection", "pose", "part", "except"})) return false;
       MeshRef m;
       const toml::node* f = t->get("file");
       if (!f) return r.fail(t->source(), where + ".file", "missing");
@@ -246,6 +258,11 @@ Result<Problem> load_toml(const fs::path& file) {
       m.deflection = p.deflection;
       if (!r.number(t->get("deflection"), where + ".deflection", m.deflection, 0.0, true)) return false;
       if (!r.pose(t->get("pose"), where + ".pose", m.pose)) return false;
+      if (!r.string(t->get("part"), where + ".part", m.part) || !r.strings(t->get("except"), where + ".except", m.except))
+        return false;
+      if (const toml::node* e = t->get("part"); e && m.part.empty()) return r.fail(*e, where + ".part", "must not be empty");
+      if (const toml::node* e = t->get("except"); e && !m.part.empty())
+        return r.fail(*e, where + ".except", "give either part or except, not both");
       out.push_back(std::move(m));
     }
     if (out.empty()) return r.fail(*n, key, "needs at least one mesh");

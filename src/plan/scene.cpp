@@ -4,12 +4,62 @@
 
 #include "swept/geometry/solid.h"
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstring>
 #include <sstream>
 
 namespace swept {
+namespace {
+
+std::string part_names(const ImportedModel& model) {
+  std::string out;
+  for (const TriangleSoup& p : model.parts) out += (out.empty() ? "" : ", ") + p.name;
+  return out;
+}
+
+// The parts of `model` that `ref` asks for (MeshRef::part, MeshRef::except), as a model of those.
+Result<ImportedModel> chosen_parts(const ImportedModel& model, const MeshRef& ref) {
+  auto known = [&](const std::string& name) {
+    return std::any_of(model.parts.begin(), model.parts.end(), [&](const TriangleSoup& p) { return p.name == name; });
+  };
+  for (const std::string& name : ref.part.empty() ? ref.except : std::vector<std::string>{ref.part})
+    if (!known(name))
+      return Error{ref.file.string() + ": no part named '" + name + "' (its parts: " + part_names(model) + ")"};
+  ImportedModel out;
+  out.file = model.file;
+  out.unit = model.unit;
+  for (const TriangleSoup& p : model.parts) {
+    const bool excepted = std::find(ref.except.begin(), ref.except.end(), p.name) != ref.except.end();
+    if (ref.part.empty() ? !excepted : p.name == ref.part) out.parts.push_back(p);
+  }
+  if (out.parts.empty()) return Error{ref.file.string() + ": except leaves no part (its parts: " + part_names(model) + ")"};
+  return out;
+}
+
+// A part of the body's file that an obstacle of the same file also holds (the body would be its
+// own obstacle): the error saying so.
+std::optional<Error> part_in_both(const Problem& problem) {
+  auto same = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code ec;
+    return std::filesystem::equivalent(a, b, ec);
+  };
+  for (const MeshRef& body : problem.body) {
+    if (body.part.empty()) continue;
+    for (const MeshRef& obstacle : problem.obstacles) {
+      if (!same(body.file, obstacle.file)) continue;
+      const bool held = obstacle.part.empty() ? std::find(obstacle.except.begin(), obstacle.except.end(), body.part) == obstacle.except.end()
+                                              : obstacle.part == body.part;
+      if (held)
+        return Error{body.file.string() + ": part '" + body.part + "' is the body and also an obstacle (add it to the obstacle's except = [...])"};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) {
   using Clock = std::chrono::steady_clock;
@@ -26,7 +76,15 @@ Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) 
       auto model = import_mesh(ref.file, io);
       if (!model) return model.error();
       for (std::string& w : model->warnings) warnings.push_back(std::move(w));
-      TriangleSoup soup = model->merged();
+      TriangleSoup soup;
+      if (ref.part.empty() && ref.except.empty()) {
+        soup = model->merged();
+      } else {
+        auto chosen = chosen_parts(*model, ref);
+        if (!chosen) return chosen.error();
+        soup = chosen->merged();
+      }
+      if (!cylinders_usable(soup)) soup.cylinder_of.clear(), soup.cylinders.clear();
       if (soup.triangles.empty()) return Error{ref.file.string() + ": the mesh has no triangles"};
       // The CAD's cylinders come along, placed, for the contact model's mates (TriangleSoup).
       if (!soup.cylinders.empty()) {
@@ -49,6 +107,7 @@ Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) 
   };
   if (auto e = gather(problem.obstacles, scene.obstacles)) return *e;
   if (auto e = gather(problem.body, scene.body)) return *e;
+  if (auto e = part_in_both(problem)) return *e;
   const auto t1 = Clock::now();
   auto made = make_scene(std::move(scene.obstacles), std::move(scene.body), config, problem.reference_point);
   if (!made) return made.error();

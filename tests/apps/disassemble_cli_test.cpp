@@ -264,10 +264,10 @@ TEST(PartPlan, TheBoltedRingsBoltPlans) {
 
 TEST(PartPlan, TheGearboxAndThePinInBore) {
   const fs::path dir = scratch("part_gearbox");
-  scenes::generate_gearbox({.name = "gearbox", .scale = scenes::Scale::test, .output_dir = dir / "scene"});
+  ASSERT_TRUE(scenes::generate_gearbox({.name = "gearbox", .scale = scenes::Scale::test, .output_dir = dir / "scene"}).ok());
   EXPECT_GE(parts_plan(dir / "scene" / "assembly.toml", dir), 1u);
   const fs::path pin = scratch("part_pin");
-  scenes::generate_pin_in_bore({.name = "pin-in-bore", .scale = scenes::Scale::test, .output_dir = pin / "scene"});
+  ASSERT_TRUE(scenes::generate_pin_in_bore({.name = "pin-in-bore", .scale = scenes::Scale::test, .output_dir = pin / "scene"}).ok());
   EXPECT_GE(parts_plan(pin / "scene" / "assembly.toml", pin), 1u);
 }
 

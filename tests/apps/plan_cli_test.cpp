@@ -5,6 +5,7 @@
 #include "swept/scenes/box_problems.h"
 #include "swept/scenes/planning_suite.h"
 
+#include "assembly/assembly_support.h"
 #include "plan/plan_support.h"
 #include "support/cli_support.h"
 
@@ -222,6 +223,66 @@ TEST_F(PlanCli, ExitCodes) {
   collide.name = "collide";
   collide.problem.start = Pose::from_translation(Vec3(10, 0, 8));
   EXPECT_EQ(run(problem(collide)).code, 1);
+}
+
+// A shaft and a pulley as two objects of one OBJ file (assimp's parts: "shaft", "pulley"): the
+// pulley's bore (16 segments) on the 24-gon shaft, the tessellations crossing by the sag
+// 3·(1 − cos(π/16)) ≈ 0.058 < the tolerance 0.1. The problem names the pulley as the body and the
+// rest of the same file as the obstacle.
+void write_shaft_and_pulley(const fs::path& obj) {
+  std::vector<Triangle> shaft, pulley;
+  test::add_prism(shaft, 3, 24, 0, 40);
+  test::add_ring(pulley, 3, 10, 16, 10, 20);
+  std::ofstream out(obj);
+  out.precision(17);
+  std::size_t v = 0;
+  for (const auto& [name, tris] : {std::pair{"shaft", &shaft}, std::pair{"pulley", &pulley}}) {
+    out << "o " << name << "\n";
+    for (const Triangle& t : *tris) {
+      for (int k = 0; k < 3; ++k) out << "v " << t[k].x() << " " << t[k].y() << " " << t[k].z() << "\n";
+      out << "f " << v + 1 << " " << v + 2 << " " << v + 3 << "\n";
+      v += 3;
+    }
+  }
+}
+
+std::string part_problem_text(const std::string& obstacle_keys, const std::string& body_keys) {
+  return "unit = \"mm\"\n[[obstacle]]\nfile = \"unit.obj\"\n" + obstacle_keys + "[[body]]\nfile = \"unit.obj\"\n" + body_keys +
+         "[start]\ntranslation = [0, 0, 0]\n[goal]\noutside = true\n"
+         "[planner]\nclearance = 0.01\ncontact_tolerance = 0.1\n[rotation]\nmode = \"none\"\n";
+}
+
+TEST_F(PlanCli, APartOfAFileIsTheBodyAndTheRestTheObstacle) {
+  write_shaft_and_pulley(dir / "unit.obj");
+  auto write = [&](const std::string& name, const std::string& obstacle, const std::string& body) {
+    std::ofstream(dir / name) << part_problem_text(obstacle, body);
+    return (dir / name).string();
+  };
+  const std::string p = write("pulley.toml", "except = [\"pulley\"]\n", "part = \"pulley\"\n");
+  const CliRun r = run(p + " --json -o " + (dir / "pulley.json").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_FALSE(doc["escape"].is_null()) << r.out;
+  check_written_path(p, dir / "pulley.json", figures_of(doc));
+  auto path = read_path(dir / "pulley.json");
+  ASSERT_TRUE(path);
+  const Vec3 pull = path->poses[1].translation - path->poses[0].translation;
+  EXPECT_EQ(pull.x(), 0.0);  // along the shaft, off one of its ends
+  EXPECT_EQ(pull.y(), 0.0);
+  EXPECT_GT(std::abs(pull.z()), 20.0);
+
+  // Bad input names the file and the parts.
+  auto refused = [&](const std::string& name, const std::string& obstacle, const std::string& body, const std::string& says) {
+    const CliRun bad = test::run_cli("plan " + write(name, obstacle, body));
+    EXPECT_EQ(bad.code, 1) << bad.out;
+    EXPECT_NE(bad.out.find(says), std::string::npos) << bad.out;
+  };
+  refused("unknown.toml", "except = [\"pulley\"]\n", "part = \"wheel\"\n", "no part named 'wheel' (its parts: shaft, pulley)");
+  refused("unknown_except.toml", "except = [\"wheel\"]\n", "part = \"pulley\"\n", "no part named 'wheel'");
+  refused("both.toml", "", "part = \"pulley\"\n", "part 'pulley' is the body and also an obstacle");
+  refused("both_keys.toml", "part = \"shaft\"\nexcept = [\"pulley\"]\n", "part = \"pulley\"\n", "give either part or except, not both");
+  refused("empty.toml", "except = [\"pulley\", \"shaft\"]\n", "part = \"pulley\"\n", "except leaves no part");
+  refused("not_strings.toml", "except = [1]\n", "part = \"pulley\"\n", "must be a string");
 }
 
 }  // namespace

@@ -153,6 +153,30 @@ TEST(CylinderMate, ThePinSlidesOutAlongItsAxisByTheCylinders) {
   EXPECT_GT(deepest_along(PinInBore::pose().rotation * Vec3::UnitX(), 5.0), 1.0);
 }
 
+TEST(CylinderMate, ThePlannerTakesThePinOutAlongItsAxisByTheCylinders) {
+  // The same problem through the planner (swept plan ASSEMBLY --part pin): its escape is a pull
+  // under the same contact model, the CAD's cylinders included.
+  const Assembly a = read_pin_in_bore();
+  const DisassemblyOptions options{.clearance = 0.01, .tolerance = 0.01};
+  auto pp = part_problem(a, {1}, {0, 1}, options);
+  ASSERT_TRUE(pp.ok()) << pp.error().message;
+  EXPECT_FALSE(pp->scene.body.cylinders.empty());
+  const PlanResult r = plan(pp->problem, pp->scene);
+  ASSERT_TRUE(r.solved()) << r.message;
+  ASSERT_GE(r.escape_segments, 1u);
+  const Vec3 pull = r.path.poses[1].translation - r.path.poses[0].translation;
+  const Vec3 up = PinInBore::pose().rotation * Vec3::UnitZ();
+  EXPECT_LT((pull.normalized() - up).norm(), 1e-12) << pull.transpose();
+  EXPECT_EQ(r.path.poses[1].rotation, Mat3::Identity());
+  // The independent check: the pin's true surface never enters the block's true solid.
+  EXPECT_LT(deepest_along(up, pull.norm()), 1e-9);
+  // Without the cylinders the same triangles cross by more than the tolerance: no way out.
+  auto facets = part_problem(test::without_cylinders(a), {1}, {0, 1}, options);
+  ASSERT_TRUE(facets.ok());
+  facets->problem.time_limit = 5;
+  EXPECT_FALSE(plan(facets->problem, facets->scene, {.max_queries = 20000}).solved());
+}
+
 TEST(CylinderMate, WithoutTheCylindersTheSameTrianglesStayPut) {
   const Assembly a = test::without_cylinders(read_pin_in_bore());
   const DisassemblyResult r = disassemble(a, {.clearance = 0.01, .tolerance = 0.01, .jobs = 2, .plan_time_limit = 0});

@@ -64,6 +64,11 @@ struct TriangleSoup {
   std::vector<CadCylinder> cylinders;  ///< the part's cylindrical faces, one per B-rep face
 };
 
+/// Are the soup's CAD cylinders (if any) what the contact model can trust: one index per
+/// triangle, each −1 or a cylinder's, every cylinder finite with a unit axis, a positive radius
+/// and a deviation ≥ 0? (The cylinders only add mates: a soup whose are not goes without them.)
+bool cylinders_usable(const TriangleSoup& soup);
+
 /// Axis-aligned bounding box.
 struct Aabb {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());

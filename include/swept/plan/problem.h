@@ -20,6 +20,11 @@ struct MeshRef {
   Pose pose;
   std::string file_unit;       ///< unit of the file's coordinates; empty: the importer's default
   double deflection = 0.0;     ///< BRepMesh linear deflection for CAD files; 0: problem default
+  /// Of a file with several parts (an assembly: STEP products, 3MF build items, OBJ groups), only
+  /// the part of this name (as `swept disassemble` prints it); empty: every part ...
+  std::string part;
+  /// ... but these (names as above). At most one of `part` and `except` is given.
+  std::vector<std::string> except;
 };
 
 enum class RotationMode { none, free, limits };
