@@ -12,7 +12,9 @@ void add_part_options(CLI::App& cmd, ProblemSource& source) {
                  "Read the first argument as an assembly (as swept disassemble reads it) and take this part out: the "
                  "part as the body at its mounted pose, every other part an obstacle, the goal outside their box, any "
                  "rotation, the contact model of swept disassemble (names as swept disassemble prints them)");
-  cmd.add_option("--tolerance", source.tolerance, "With --part: the mating tolerance (default 2 x --deflection)")
+  cmd.add_option("--tolerance", source.tolerance,
+                 "The contact tolerance: how far mates may reach into each other at a start or goal in contact "
+                 "(a problem file's planner.contact_tolerance; with --part default 2 x --deflection)")
       ->check(CLI::PositiveNumber);
   add_import_options(cmd, source.import);
 }
@@ -22,6 +24,7 @@ PartProblem load_problem_source(const ProblemSource& source) {
     auto problem = load_problem(source.file);
     if (!problem) throw std::runtime_error(problem.error().message);
     if (source.fitter) problem->build.fitter = *source.fitter;
+    if (source.tolerance > 0) problem->contact_tolerance = source.tolerance;
     auto scene = load_scene(*problem, problem->build);
     if (!scene) throw std::runtime_error(scene.error().message);
     return {std::move(*problem), std::move(*scene)};

@@ -2,6 +2,7 @@
 // --jobs, exit codes, and bad input that writes nothing.
 #include "assembly/assembly_support.h"
 #include "support/cli_support.h"
+#include "support/test_support.h"
 #include "swept/scenes/gearbox.h"
 #include "swept/scenes/pin_in_bore.h"
 
@@ -277,6 +278,13 @@ TEST(PartPlan, TheSharedAssembly) {
   const fs::path dir = scratch("part_as1");
   // At least nut, nut#2 and rod come out with every other part in place (tried by hand).
   EXPECT_GE(parts_plan(as1, dir), 3u);
+}
+
+TEST(PartPlan, OpenCascadesMotor) {
+  const auto motor = occt_sample("Motor-c.brep");
+  if (!motor) GTEST_SKIP() << "OCCT's Motor-c.brep not found (shared data or occt-misc)";
+  const fs::path dir = scratch("part_motor");
+  EXPECT_GE(parts_plan(*motor, dir), 1u);
 }
 
 TEST(PartPlan, BadPartNames) {
