@@ -30,8 +30,21 @@ struct DisassembleCliOptions {
   double plan_time = 60.0;
   std::uint64_t plan_queries = 20000;
   bool no_subassemblies = false;
+  std::vector<std::string> targets;
+  bool reassemble = false;
   ImportCliOptions import;
 };
+
+// The directions tried for a part and what blocks each, one line per direction.
+nlohmann::json blocking_json(const Assembly& a, const SequenceStep& s) {
+  nlohmann::json per = nlohmann::json::array();
+  for (const auto& b : s.blocking) {
+    nlohmann::json names = nlohmann::json::array();
+    for (std::size_t q : b.blockers) names.push_back(a.parts[q].name);
+    per.push_back({{"direction", nlohmann::json::array({b.direction.x(), b.direction.y(), b.direction.z()})}, {"blockers", names}});
+  }
+  return per;
+}
 
 nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -74,7 +87,17 @@ void run(const DisassembleCliOptions& o) {
   options.plan_time_limit = o.plan_time;
   options.plan_max_queries = o.plan_queries;
   options.subassemblies = !o.no_subassemblies;
+  for (const std::string& name : o.targets) {
+    const auto t = find_part(*assembly, name);
+    if (!t) throw std::runtime_error(t.error().message);
+    if (std::find(options.targets.begin(), options.targets.end(), *t) == options.targets.end()) options.targets.push_back(*t);
+  }
+  if (o.reassemble && o.targets.empty()) throw std::runtime_error("--reassemble goes with --target");
   const DisassemblyResult r = disassemble(*assembly, options);
+  for (std::size_t t : r.targets)
+    if (std::find(r.fixed.begin(), r.fixed.end(), t) != r.fixed.end())
+      throw std::runtime_error(o.assembly + ": the target '" + assembly->parts[t].name +
+                               "' is fixed (the base, or marked fixed = true): it is never moved");
   const Assembly& a = *assembly;
 
   // Path files: NN-name.json, one per removal, in order; written after the sequence, all of them.
@@ -93,6 +116,23 @@ void run(const DisassembleCliOptions& o) {
       auto w = write_path(fs::path(o.output_dir) / name, s.path, a.unit, s.reference);
       if (!w) throw std::runtime_error(w.error().message);
       path_files[i] = name;
+    }
+    // The way back: the same removals in reverse order, each path played backwards into its
+    // mounted pose (NN-name.json again, NN the order of putting back).
+    if (o.reassemble) {
+      const fs::path back = fs::path(o.output_dir) / "reassemble";
+      fs::create_directories(back, ec);
+      if (ec) throw std::runtime_error(back.string() + ": cannot create the folder: " + ec.message());
+      int j = 0;
+      for (std::size_t i = r.sequence.size(); i-- > 0;) {
+        const SequenceStep& s = r.sequence[i];
+        if (!s.removed) continue;
+        char prefix[16];
+        std::snprintf(prefix, sizeof prefix, "%02d-", ++j);
+        Path reversed{{s.path.poses.rbegin(), s.path.poses.rend()}};
+        auto w = write_path(back / (std::string(prefix) + file_stem(step_name(a, s)) + ".json"), reversed, a.unit, s.reference);
+        if (!w) throw std::runtime_error(w.error().message);
+      }
     }
   }
 
@@ -151,12 +191,26 @@ void run(const DisassembleCliOptions& o) {
                        {"interferences", interferences},
                        {"sequence", sequence},
                        {"warnings", a.warnings},
+                       {"target", nullptr},
                        {"time_ms",
                         {{"total", total_ms},
                          {"read", read_ms},
                          {"build", r.time_ms.build},
                          {"interference", r.time_ms.interference},
                          {"sequence", r.time_ms.sequence}}}};
+    if (!r.targets.empty()) {
+      nlohmann::json names = nlohmann::json::array(), why = nlohmann::json::array(), back = nlohmann::json::array();
+      for (std::size_t t : r.targets) names.push_back(a.parts[t].name);
+      for (const SequenceStep& w : r.why) why.push_back({{"part", a.parts[w.parts[0]].name}, {"blocking", blocking_json(a, w)}});
+      for (std::size_t i = r.sequence.size(); i-- > 0;)
+        if (r.sequence[i].removed) back.push_back(step_name(a, r.sequence[i]));
+      doc["target"] = {{"parts", names},
+                       {"removals", r.complete ? nlohmann::json(r.sequence.size()) : nlohmann::json(nullptr)},
+                       {"fewest", r.fewest},
+                       {"lower_bound", r.lower_bound},
+                       {"why", why},
+                       {"reassemble", back}};
+    }
     std::cout << json_text(doc, 2) << "\n";
   } else {
     std::cout << "assembly     " << o.assembly << ": " << a.parts.size() << (a.parts.size() == 1 ? " part, " : " parts, ")
@@ -181,13 +235,57 @@ void run(const DisassembleCliOptions& o) {
                  s.removed ? fmt_fixed(s.distance, 2) : "", blockers, fmt_fixed(s.time_ms, 1)});
     }
     if (!r.sequence.empty()) table.print(std::cout);
+    if (!r.targets.empty()) {
+      std::string names;
+      for (std::size_t t : r.targets) names += (names.empty() ? "" : ", ") + a.parts[t].name;
+      // Why: each target and each part taken off for it, the way it leaves and what blocks the
+      // other directions tried (--json lists them direction by direction).
+      Table why({"part", "out along", "after", "tried", "the other directions blocked by"});
+      auto list = [&](const auto& parts) {
+        std::string out;
+        for (std::size_t q : parts) out += (out.empty() ? "" : ", ") + a.parts[q].name;
+        return out;
+      };
+      for (const SequenceStep& w : r.why) {
+        const std::size_t p = w.parts[0];
+        const SequenceStep* step = nullptr;
+        for (const SequenceStep& st : r.sequence)
+          if (st.parts[0] == p) step = &st;
+        std::set<std::size_t> by;
+        std::vector<std::size_t> after;
+        for (const auto& b : w.blocking) {
+          if (step && b.direction == step->direction) after = b.blockers;
+          else by.insert(b.blockers.begin(), b.blockers.end());
+        }
+        why.add({a.parts[p].name, step ? direction_text(step->direction) : "-", step ? (after.empty() ? "-" : list(after)) : "",
+                 std::to_string(w.blocking.size()), list(by)});
+      }
+      std::cout << "why          with every part in place (the directions one by one: --json)\n";
+      why.print(std::cout);
+      if (r.complete)
+        std::cout << "result       " << names << ": " << r.sequence.size() << " removal" << (r.sequence.size() == 1 ? "" : "s")
+                  << " (the target" << (r.targets.size() == 1 ? "" : "s") << " included), "
+                  << (r.fewest ? "the fewest" : "not proved the fewest (the search's limit was reached; at least " +
+                                                    std::to_string(r.lower_bound) + ")")
+                  << "; the other parts stay mounted\n";
+      else
+        std::cout << "result       " << names << " cannot come out by straight pulls (no set of removals frees "
+                  << (r.targets.size() == 1 ? "it" : "them") << "; the blockers are above)\n";
+      if (o.reassemble) {
+        std::string back;
+        for (std::size_t i = r.sequence.size(); i-- > 0;) back += (back.empty() ? "" : ", ") + step_name(a, r.sequence[i]);
+        std::cout << "reassemble   " << back << (o.output_dir.empty() ? "" : " (paths in " + o.output_dir + "/reassemble)") << "\n";
+      }
+    } else {
     const bool nothing_moves = r.fixed.size() == a.parts.size();
     std::cout << "result       "
               << (nothing_moves ? "complete: nothing to take apart, no part is movable"
                                 : r.complete ? "complete: every movable part comes out" : "not complete: parts stay")
               << " (fixed: ";
     for (std::size_t i = 0; i < r.fixed.size(); ++i) std::cout << (i ? ", " : "") << a.parts[r.fixed[i]].name;
-    std::cout << ")\n"
+    std::cout << ")\n";
+    }
+    std::cout
               << "time         total " << fmt_fixed(total_ms, 1) << " ms (read " << fmt_fixed(read_ms, 1) << ", build "
               << fmt_fixed(r.time_ms.build, 1) << ", interference " << fmt_fixed(r.time_ms.interference, 1)
               << ", sequence " << fmt_fixed(r.time_ms.sequence, 1) << "), queries " << r.distance_queries << " (pull sweeps and planner distances)"
@@ -233,6 +331,11 @@ void add_disassemble_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("--no-subassemblies", o->no_subassemblies, "Do not try groups of touching parts");
+  cmd->add_option("--target", o->targets,
+                  "Take out only this part (repeat for several) and the fewest others that must come off first, by "
+                  "straight pulls; the others stay mounted. Prints why (what blocks each direction)");
+  cmd->add_flag("--reassemble", o->reassemble,
+                "With --target: also the order to put it back, the paths played backwards (-o DIR/reassemble)");
   add_import_options(*cmd, o->import);
   cmd->callback([o] { run(*o); });
 }

@@ -85,7 +85,7 @@ pyb::list names(const Assembly& a, const std::vector<std::size_t>& parts) {
 
 pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<double> tolerance, int jobs,
                          double plan_time, std::int64_t plan_queries, bool subassemblies,
-                         std::optional<std::vector<pyb::object>> fixed) {
+                         std::optional<std::vector<pyb::object>> fixed, std::optional<std::vector<pyb::object>> target) {
   const Assembly& a = *pa.assembly;
   if (!(clearance >= 0) || !std::isfinite(clearance))
     throw InputError("clearance must be a finite number >= 0, not " + std::to_string(clearance));
@@ -108,11 +108,19 @@ pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<d
     for (const pyb::object& key : *fixed) chosen.insert(part_index(a, key));
     options.fixed = std::vector<std::size_t>(chosen.begin(), chosen.end());
   }
+  if (target)
+    for (const pyb::object& key : *target) {
+      const std::size_t t = part_index(a, key);
+      if (std::find(options.targets.begin(), options.targets.end(), t) == options.targets.end()) options.targets.push_back(t);
+    }
   DisassemblyResult r;
   {
     pyb::gil_scoped_release release;
     r = disassemble(a, options);
   }
+  for (std::size_t t : r.targets)
+    if (std::find(r.fixed.begin(), r.fixed.end(), t) != r.fixed.end())
+      throw InputError("the target '" + a.parts[t].name + "' is fixed (the base, or marked fixed = true): it is never moved");
 
   pyb::list interferences;
   for (const Interference& f : r.interferences) {
@@ -123,8 +131,7 @@ pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<d
     d["triangle_pairs"] = f.triangle_pairs;
     interferences.append(d);
   }
-  pyb::list sequence;
-  for (const SequenceStep& s : r.sequence) {
+  auto step_dict = [&](const SequenceStep& s) {
     pyb::dict d;
     d["round"] = s.round;
     d["parts"] = pyb::tuple(names(a, s.parts));
@@ -143,8 +150,11 @@ pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<d
     d["blockers"] = pyb::tuple(names(a, std::vector<std::size_t>(all.begin(), all.end())));
     d["blocking"] = blocking;
     d["time_ms"] = s.time_ms;
-    sequence.append(d);
-  }
+    return d;
+  };
+  pyb::list sequence, why;
+  for (const SequenceStep& s : r.sequence) sequence.append(step_dict(s));
+  for (const SequenceStep& s : r.why) why.append(step_dict(s));
   pyb::list parts;
   for (const AssemblyPart& p : a.parts) parts.append(p.name);
   pyb::dict t;
@@ -161,6 +171,10 @@ pyb::dict disassemble_py(const PyAssembly& pa, double clearance, std::optional<d
   d["warnings"] = a.warnings;
   d["time_ms"] = t;
   d["distance_queries"] = r.distance_queries;
+  d["targets"] = pyb::tuple(names(a, r.targets));
+  d["fewest"] = r.fewest;
+  d["lower_bound"] = r.lower_bound;
+  d["why"] = why;
   return d;
 }
 
@@ -211,7 +225,7 @@ The part (by name or index) as a swept.Mesh, in the world frame at its mounted p
       });
 
   m.def("_disassemble", &disassemble_py, arg("assembly"), arg("clearance"), arg("tolerance"), arg("jobs"),
-        arg("plan_time"), arg("plan_queries"), arg("subassemblies"), arg("fixed"));
+        arg("plan_time"), arg("plan_queries"), arg("subassemblies"), arg("fixed"), arg("target"));
 }
 
 }  // namespace swept::py

@@ -156,6 +156,10 @@ class DisassemblyResult(NamedTuple):
     warnings: list
     time_ms: dict               #: build, interference, sequence
     distance_queries: int
+    targets: tuple              #: target=...: the targets' names (empty: the whole assembly)
+    fewest: bool                #: target=...: no smaller set of removals frees them
+    lower_bound: int            #: target=...: no set of fewer removals frees them
+    why: list                   #: target=...: [DisassemblyStep] of the targets and the parts removed for them, with .blocking
 
     @property
     def order(self) -> list:
@@ -235,7 +239,7 @@ def plan(problem: Problem, time_limit: Optional[float] = None, threads: Optional
 def disassemble(assembly: "Assembly | str | os.PathLike", *, clearance: float = 0.01,
                 tolerance: Optional[float] = None, jobs: int = 0, plan_time: float = 60.0,
                 plan_queries: int = 20000, subassemblies: bool = True,
-                fixed: Optional[Any] = None) -> DisassemblyResult:
+                fixed: Optional[Any] = None, target: Optional[Any] = None) -> DisassemblyResult:
     """Takes a whole assembly apart, as `swept disassemble` does (docs/assembly.md).
 
     assembly: a swept.Assembly, or a path read with Assembly.load(path) (TOML assembly file,
@@ -247,16 +251,21 @@ def disassemble(assembly: "Assembly | str | os.PathLike", *, clearance: float = 
     a mate keeps more than this; tolerance: how far mated faces may overlap, and the interference
     threshold (default: twice the assembly's deflection). jobs: threads (0: all cores; the same
     result at any count). fixed: part names or indices never moved (default: the parts marked
-    fixed, else the largest). Parts that stay are a result (complete False), not an error; bad
-    input raises swept.Error. The GIL is released while it runs."""
+    fixed, else the largest). target: part names or indices to take out with the fewest others
+    that must come off first, by straight pulls (`swept disassemble --target`); the others stay
+    mounted, and `why` says what blocks each direction. Parts that stay are a result (complete
+    False), not an error; bad input raises swept.Error. The GIL is released while it runs."""
     if not isinstance(assembly, Assembly):
         if not isinstance(assembly, (str, os.PathLike)):
             raise TypeError(f"assembly: a swept.Assembly or a path is needed, not {type(assembly).__name__}")
         assembly = Assembly.load(assembly)
     if fixed is not None and isinstance(fixed, (str, int)):
         fixed = [fixed]
+    if target is not None and isinstance(target, (str, int)):
+        target = [target]
     d = _swept._disassemble(assembly, clearance, tolerance, jobs, plan_time, plan_queries, subassemblies,
-                            None if fixed is None else list(fixed))
+                            None if fixed is None else list(fixed), None if target is None else list(target))
     d["interferences"] = [Interference(**f) for f in d["interferences"]]
     d["sequence"] = [DisassemblyStep(**s) for s in d["sequence"]]
+    d["why"] = [DisassemblyStep(**s) for s in d["why"]]
     return DisassemblyResult(**d)

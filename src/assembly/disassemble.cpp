@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <set>
@@ -47,24 +48,10 @@ class Sequencer {
 
   DisassemblyResult run() {
     DisassemblyResult out;
-    out.tolerance = settings_.tolerance;
+    std::vector<bool> is_fixed = prepare(out);
     const std::size_t n = a_.parts.size();
-    auto t0 = Clock::now();
-    bodies_.resize(n);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies_[i] = assembly_detail::make_body(a_, {i}, {}); });
-    size_ = assembly_size(bodies_);
-    out.time_ms.build = ms_since(t0);
-
-    t0 = Clock::now();
-    out.interferences = find_interferences(a_, settings_.tolerance);
-    out.time_ms.interference = ms_since(t0);
-
-    t0 = Clock::now();
-    out.fixed = fixed_parts();
-    std::vector<bool> is_fixed(n, false);
-    for (std::size_t i : out.fixed) is_fixed[i] = true;
+    const auto t0 = Clock::now();
     touching_ = contact_graph();
-    contacts_ = find_contacts(is_fixed);
     blocked_pulls_.assign(n, {});
     std::vector<std::size_t> remaining(n);
     std::iota(remaining.begin(), remaining.end(), std::size_t{0});
@@ -111,7 +98,233 @@ class Sequencer {
     return out;
   }
 
+  // The fewest removals that free the targets (DisassemblyOptions::targets): a breadth-first
+  // search over the sets of parts removed, by straight pulls. Every blocking is taken with every
+  // part in place and pulls long enough to leave the whole assembly's box, so a part blocks a
+  // pull on its own or not whatever else is gone, and a set of removals is feasible when its
+  // parts can be ordered so that each one's blockers along some direction are gone before it.
+  // The first level that holds every target is the fewest.
+  DisassemblyResult run_target() {
+    DisassemblyResult out;
+    const std::vector<bool> is_fixed = prepare(out, /*contacts=*/false);
+    const auto t0 = Clock::now();
+    out.targets = o_.targets;
+    const std::size_t n = a_.parts.size();
+    all_.resize(n);
+    std::iota(all_.begin(), all_.end(), std::size_t{0});
+    block_.assign(n, std::nullopt);
+    // The parts the targets may need off: their blockers, and those parts' blockers, and so on.
+    std::vector<std::size_t> relevant;
+    std::vector<bool> seen(n, false);
+    std::vector<std::size_t> stack(o_.targets.rbegin(), o_.targets.rend());
+    for (std::size_t t : o_.targets) seen[t] = true;
+    while (!stack.empty()) {
+      const std::size_t p = stack.back();
+      stack.pop_back();
+      relevant.push_back(p);
+      for (const SequenceStep::Blocking& b : blocking(p).blocking)
+        for (std::size_t q : b.blockers)
+          if (!seen[q] && !is_fixed[q]) seen[q] = true, stack.push_back(q);
+    }
+    std::sort(relevant.begin(), relevant.end());
+    std::vector<Removal> level{Removal{}};
+    std::set<std::vector<std::size_t>> visited{{}};
+    std::optional<Removal> found;
+    std::size_t states = 1;
+    bool cut = false;
+    while (!level.empty() && !found && !cut) {
+      std::vector<Removal> next;
+      for (const Removal& r : level) {
+        std::vector<bool> gone(n, false);
+        for (std::size_t p : r.parts) gone[p] = true;
+        for (std::size_t p : relevant) {
+          if (gone[p]) continue;
+          const int d = freeing(p, gone);
+          if (d < 0) continue;
+          std::vector<std::size_t> key = r.parts;
+          key.push_back(p);
+          std::sort(key.begin(), key.end());
+          if (!visited.insert(key).second) continue;
+          Removal t = r;
+          t.parts.push_back(p);
+          t.direction.push_back(d);
+          gone[p] = true;
+          const bool done = targets_gone(gone);
+          gone[p] = false;
+          if (done) {
+            found = std::move(t);
+            break;
+          }
+          next.push_back(std::move(t));
+          if (++states >= o_.target_states) {
+            cut = true;
+            break;
+          }
+        }
+        if (found || cut) break;
+      }
+      // Every set of this size was tried: none frees the targets.
+      if (!found && !cut) out.lower_bound = level.front().parts.size() + 1;
+      level = std::move(next);
+    }
+    if (cut) found = greedy_removal();
+    out.fewest = found.has_value() && !cut;
+    if (found) {
+      out.complete = true;
+      if (!cut) out.lower_bound = found->parts.size();
+      for (std::size_t k = 0; k < found->parts.size(); ++k) {
+        const std::size_t p = found->parts[k];
+        const SequenceStep::Blocking& b = blocking(p).blocking[static_cast<std::size_t>(found->direction[k])];
+        SequenceStep step;
+        step.parts = {p};
+        step.removed = true;
+        step.direction = b.direction;
+        step.distance = contact::exit_length(bodies_[p], others({p}, all_), b.direction, exit_margin());
+        step.path.poses = {Pose{}, Pose::from_translation(step.distance * b.direction)};
+        step.reference = bodies_[p].box.center();
+        step.round = static_cast<int>(k) + 1;
+        out.sequence.push_back(std::move(step));
+      }
+    }
+    // Why: the targets, then the parts removed for them, each with its directions and blockers.
+    std::vector<std::size_t> why = o_.targets;
+    for (const SequenceStep& st : out.sequence)
+      if (std::find(why.begin(), why.end(), st.parts[0]) == why.end()) why.push_back(st.parts[0]);
+    for (std::size_t p : why) out.why.push_back(blocking(p));
+    out.time_ms.sequence = ms_since(t0);
+    out.distance_queries = queries_.load();
+    return out;
+  }
+
  private:
+  /// Parts removed in order, each by its direction (an index into blocking(p).blocking).
+  struct Removal {
+    std::vector<std::size_t> parts;
+    std::vector<int> direction;
+  };
+  std::vector<std::size_t> all_;
+  std::vector<std::optional<SequenceStep>> block_;
+
+  // The directional blocking of p with every part in place (computed once): along each
+  // direction, the fixed parts first; a direction a fixed part blocks lists the fixed parts that
+  // block it, and nothing else (it can never be freed).
+  const SequenceStep& blocking(std::size_t p) {
+    if (block_[p]) return *block_[p];
+    if (contacts_[p].empty()) contacts_[p] = contacts_of(p);
+    std::vector<std::size_t> order;
+    for (std::size_t i : all_)
+      if (i != p && is_fixed_[i]) order.push_back(i);
+    for (std::size_t i : all_)
+      if (i != p && !is_fixed_[i]) order.push_back(i);
+    SequenceStep s;
+    s.parts = {p};
+    const auto t0 = Clock::now();
+    const std::vector<const Body*> obstacles = others({p}, all_);
+    const Body& moving = bodies_[p];
+    const double threshold = settings_.clearance + settings_.tolerance;
+    for (const Vec3& d : contact::pull_directions(moving, obstacles, threshold, known_contacts(p))) {
+      const double length = contact::exit_length(moving, obstacles, d, exit_margin());
+      SequenceStep::Blocking b{d, {}};
+      bool by_fixed = false;
+      for (std::size_t i : order) {
+        if (by_fixed && !is_fixed_[i]) break;
+        if (!contact::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_)) {
+          b.blockers.push_back(i);
+          by_fixed = by_fixed || is_fixed_[i];
+        }
+      }
+      std::sort(b.blockers.begin(), b.blockers.end());
+      s.blocking.push_back(std::move(b));
+    }
+    s.time_ms = ms_since(t0);
+    block_[p] = std::move(s);
+    return *block_[p];
+  }
+  // The contact facets of part p with every other part (as find_contacts finds them).
+  std::vector<std::vector<contact::ContactFacet>> contacts_of(std::size_t p) const {
+    const std::size_t n = bodies_.size();
+    const double threshold = settings_.clearance + settings_.tolerance;
+    std::vector<std::vector<contact::ContactFacet>> out(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
+      if (j == p || contact::box_gap(bodies_[j].box, bodies_[p].box) > threshold) return;
+      const ProximityResult near =
+          proximity_pairs(*bodies_[j].tree, bodies_[j].pose, *bodies_[p].tree, bodies_[p].pose, {.threshold = threshold});
+      out[j] = contact::contact_facets(near.pairs, bodies_[j].triangles.size(), bodies_[p].triangles.size());
+    });
+    return out;
+  }
+  std::vector<bool> is_fixed_;
+  // The first direction whose blockers are all gone (−1: none).
+  int freeing(std::size_t p, const std::vector<bool>& gone) {
+    const auto& dirs = blocking(p).blocking;
+    for (std::size_t k = 0; k < dirs.size(); ++k)
+      if (std::all_of(dirs[k].blockers.begin(), dirs[k].blockers.end(), [&](std::size_t q) { return gone[q]; }))
+        return static_cast<int>(k);
+    return -1;
+  }
+  bool targets_gone(const std::vector<bool>& gone) const {
+    return std::all_of(o_.targets.begin(), o_.targets.end(), [&](std::size_t t) { return gone[t]; });
+  }
+  // Past the search's limit: each target in turn, each part by the direction with the fewest
+  // blockers still in place, its blockers first (depth first; a part met again on the way is a
+  // cycle, and that direction is given up).
+  std::optional<Removal> greedy_removal() {
+    const std::size_t n = a_.parts.size();
+    std::vector<bool> gone(n, false), visiting(n, false);
+    Removal out;
+    std::function<bool(std::size_t)> take = [&](std::size_t p) -> bool {
+      if (gone[p]) return true;
+      if (visiting[p]) return false;
+      visiting[p] = true;
+      const auto dirs = blocking(p).blocking;
+      std::vector<std::size_t> order(dirs.size());
+      std::iota(order.begin(), order.end(), std::size_t{0});
+      auto missing = [&](std::size_t k) {
+        return std::count_if(dirs[k].blockers.begin(), dirs[k].blockers.end(), [&](std::size_t q) { return !gone[q]; });
+      };
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return missing(x) < missing(y); });
+      for (std::size_t k : order) {
+        bool ok = std::none_of(dirs[k].blockers.begin(), dirs[k].blockers.end(), [&](std::size_t q) { return is_fixed_[q]; });
+        for (std::size_t q : dirs[k].blockers) ok = ok && take(q);
+        const int d = ok ? freeing(p, gone) : -1;
+        if (d >= 0) {
+          out.parts.push_back(p);
+          out.direction.push_back(d);
+          gone[p] = true;
+          visiting[p] = false;
+          return true;
+        }
+      }
+      visiting[p] = false;
+      return false;
+    };
+    for (std::size_t t : o_.targets)
+      if (!take(t)) return std::nullopt;
+    return out;
+  }
+
+  // What both runs start with: the bodies, the interferences, the fixed parts, and (all of them
+  // at once, `contacts`; else part by part when asked, contacts_of) the contacts.
+  std::vector<bool> prepare(DisassemblyResult& out, bool contacts = true) {
+    out.tolerance = settings_.tolerance;
+    const std::size_t n = a_.parts.size();
+    auto t0 = Clock::now();
+    bodies_.resize(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies_[i] = assembly_detail::make_body(a_, {i}, {}); });
+    size_ = assembly_size(bodies_);
+    out.time_ms.build = ms_since(t0);
+    t0 = Clock::now();
+    out.interferences = find_interferences(a_, settings_.tolerance);
+    out.time_ms.interference = ms_since(t0);
+    out.fixed = fixed_parts();
+    std::vector<bool> is_fixed(n, false);
+    for (std::size_t i : out.fixed) is_fixed[i] = true;
+    is_fixed_ = is_fixed;
+    if (contacts) contacts_ = find_contacts(is_fixed);
+    else contacts_.assign(n, {});
+    return is_fixed;
+  }
+
   const Assembly& a_;
   const DisassemblyOptions& o_;
   PullSettings settings_;
@@ -380,7 +593,10 @@ DisassemblyResult disassemble(const Assembly& assembly, const DisassemblyOptions
   const double tolerance = options.tolerance > 0 ? options.tolerance : 2.0 * ImportOptions{}.linear_deflection;
   tbb::task_arena arena(options.jobs > 0 ? options.jobs : tbb::task_arena::automatic);
   DisassemblyResult out;
-  arena.execute([&] { out = Sequencer(assembly, options, tolerance).run(); });
+  arena.execute([&] {
+    Sequencer sequencer(assembly, options, tolerance);
+    out = options.targets.empty() ? sequencer.run() : sequencer.run_target();
+  });
   return out;
 }
 

@@ -287,6 +287,42 @@ TEST(PartPlan, OpenCascadesMotor) {
   EXPECT_GE(parts_plan(*motor, dir), 1u);
 }
 
+TEST(DisassembleCli, TargetWhyAndReassemble) {
+  const fs::path dir = scratch("target");
+  ASSERT_TRUE(scenes::generate_gearbox({.name = "gearbox", .scale = scenes::Scale::test, .output_dir = dir / "scene"}).ok());
+  const std::string toml = (dir / "scene" / "assembly.toml").string();
+  const CliRun r = run_cli("disassemble " + toml + " --target cover --reassemble --json -o " + (dir / "out").string(), false);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["target"]["parts"], nlohmann::json({"cover"}));
+  EXPECT_EQ(doc["target"]["removals"], 5);
+  EXPECT_TRUE(doc["target"]["fewest"].get<bool>());
+  ASSERT_EQ(doc["sequence"].size(), 5u);
+  EXPECT_EQ(doc["sequence"][4]["part"], "cover");
+  EXPECT_EQ(doc["target"]["why"][0]["part"], "cover");
+  EXPECT_EQ(doc["target"]["reassemble"][0], "cover");  // back in first, the screws after it
+  // The way back: the same paths reversed, ending at the mounted pose.
+  const auto out = read_path(dir / "out" / "05-cover.json");
+  const auto back = read_path(dir / "out" / "reassemble" / "01-cover.json");
+  ASSERT_TRUE(out.ok() && back.ok());
+  ASSERT_EQ(back->poses.size(), out->poses.size());
+  EXPECT_EQ(back->poses.back().translation, out->poses.front().translation);
+  EXPECT_EQ(back->poses.front().translation, out->poses.back().translation);
+  // The table and the why, without --json.
+  const CliRun text = run_cli("disassemble " + toml + " --target gear");
+  EXPECT_EQ(text.code, 0) << text.out;
+  EXPECT_NE(text.out.find("gear: 7 removals (the target included), the fewest"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("why "), std::string::npos) << text.out;
+  // Bad input: an unknown or a fixed target; --reassemble without --target.
+  const CliRun unknown = run_cli("disassemble " + toml + " --target wheel");
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.out.find("no part named 'wheel' (its parts: housing, cover,"), std::string::npos) << unknown.out;
+  const CliRun fixed = run_cli("disassemble " + toml + " --target housing");
+  EXPECT_EQ(fixed.code, 1);
+  EXPECT_NE(fixed.out.find("the target 'housing' is fixed"), std::string::npos) << fixed.out;
+  EXPECT_EQ(run_cli("disassemble " + toml + " --reassemble").code, 1);
+}
+
 TEST(PartPlan, BadPartNames) {
   const fs::path dir = scratch("part_bad");
   const fs::path toml = write_assembly(dir, bolted_ring());

@@ -120,3 +120,22 @@ def test_a_folder_of_placed_meshes(tmp_path):
     write_stl(str(folder / "block.stl"), *box((-1, -1, 0), (1, 1, 2)))
     r = swept.disassemble(str(folder))
     assert r.parts == ("base", "block") and r.fixed == ("base",) and r.complete and r.order == ["block"]
+
+
+def test_what_must_come_off_first(tmp_path):
+    """target='peg': the lid must come off first (the peg's only way out is up, through it), then
+    the peg; nothing else moves. The lid as target needs nothing off. The cup is fixed."""
+    a = swept.Assembly.load(write_cup_assembly(str(tmp_path)))
+    r = swept.disassemble(a, target="peg", jobs=1)
+    assert r.complete and r.targets == ("peg",) and r.fewest and r.lower_bound == 2
+    assert r.order == ["lid", "peg"]
+    np.testing.assert_allclose(r.sequence[1].direction, [0, 0, 1], atol=1e-12)
+    assert [w.parts for w in r.why] == [("peg",), ("lid",)]
+    up = [b for d, b in r.why[0].blocking if np.allclose(d, [0, 0, 1])]
+    assert up == [("lid",)]
+    lid = swept.disassemble(a, target=["lid"])
+    assert lid.order == ["lid"] and lid.fewest
+    with pytest.raises(swept.Error, match="fixed"):
+        swept.disassemble(a, target="cup")
+    with pytest.raises(swept.Error):
+        swept.disassemble(a, target="nosuch")

@@ -47,6 +47,13 @@ struct DisassemblyOptions {
   /// The parts never moved, by index; empty: the parts marked `fixed`, or when none is, the
   /// part with the largest bounding box (the base).
   std::optional<std::vector<std::size_t>> fixed;
+  /// Selective disassembly: take out only these parts (indices, not fixed) and the fewest others
+  /// that must come off first, by straight pulls with every blocking taken with all parts in
+  /// place (docs/assembly.md, "What must come off first"); empty: the whole assembly.
+  std::vector<std::size_t> targets;
+  /// The selective search's limit on the sets of removals it keeps; past it the answer is a
+  /// greedy one, not proved the fewest (DisassemblyResult::fewest false).
+  std::size_t target_states = 200000;
 };
 
 /// How a part (or group) left.
@@ -83,14 +90,21 @@ struct DisassemblyResult {
   /// Queries made: one exact sweep (sweep_translation) per obstacle a pull comes near, and the
   /// planner's distance queries when it was asked.
   std::uint64_t distance_queries = 0;
+  /// Selective disassembly (DisassemblyOptions::targets): `sequence` is the removals that free
+  /// the targets, the targets among them (`complete`: they all come out); `fewest`: no smaller
+  /// set of removals does (the search ran to the end); `lower_bound`: no set of fewer removals
+  /// does (the size of the answer when `fewest`); `why`: for each target and each part removed
+  /// for it, the directions tried and the parts blocking each with every part in place.
+  std::vector<std::size_t> targets;
+  bool fewest = false;
+  std::size_t lower_bound = 0;
+  std::vector<SequenceStep> why;
 };
 
 /// Parts overlapping by more than `tolerance` at their mounted poses, pair by pair (i < j), with
 /// the deepest triangle pair by the mate rule's overlap. Deterministic; runs in the caller's arena.
 std::vector<Interference> find_interferences(const Assembly& assembly, double tolerance);
 
-/// The disassembly sequence. Parts in an interference are not exempted: they simply block each
-/// other (the interference is reported first).
 /// The problem of taking `group` (indices) out of the parts `present` (the others stay as
 /// obstacles): the group is the body, its frame the world's (start: its mounted pose, the
 /// identity), the goal outside the obstacles' box, any rotation, the clearance and contact
@@ -106,6 +120,8 @@ Result<PartProblem> part_problem(const Assembly& assembly, const std::vector<std
 /// The part named `name` (as `swept disassemble` prints it), or an error listing the names.
 Result<std::size_t> find_part(const Assembly& assembly, const std::string& name);
 
+/// The disassembly sequence (or with `targets`, the fewest removals that free them). Parts in an
+/// interference are not exempted: they simply block each other (the interference is reported first).
 DisassemblyResult disassemble(const Assembly& assembly, const DisassemblyOptions& options = {});
 
 }  // namespace swept
