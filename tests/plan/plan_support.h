@@ -110,7 +110,9 @@ inline oracle::PathCheckReport check_path_independently(const PlanScene& s, cons
         << what << " " << m << " is more than (longest segment)/32 above the oracle's dense minimum " << dense_min;
   };
   if (figures.min_clearance) expect_within(*figures.min_clearance, rep.dense_min, "min_clearance");
-  if (figures.contact_segments) EXPECT_EQ(*figures.contact_segments, rep.contact_segments) << "segments in contact";
+  if (figures.contact_segments) {
+    EXPECT_EQ(*figures.contact_segments, rep.contact_segments) << "segments in contact";
+  }
   return rep;
 }
 

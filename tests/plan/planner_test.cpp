@@ -34,7 +34,9 @@ void expect_ends(const GeneratedProblem& g, const PlanScene& s, const PlanResult
   }
   // The whole path keeps the margin, unless an end is in contact (the reported minimum then
   // includes that contact; the oracle checks the motions in contact by their own rule).
-  if (r.escape_segments + r.approach_segments == 0) EXPECT_GE(r.min_clearance, g.problem.clearance);
+  if (r.escape_segments + r.approach_segments == 0) {
+    EXPECT_GE(r.min_clearance, g.problem.clearance);
+  }
   EXPECT_EQ(r.path_hash, path_hash(r.path));
   check_independently(s, g.problem, r);
 }
