@@ -211,33 +211,7 @@ class Sequencer {
   const SequenceStep& blocking(std::size_t p) {
     if (block_[p]) return *block_[p];
     if (contacts_[p].empty()) contacts_[p] = contacts_of(p);
-    std::vector<std::size_t> order;
-    for (std::size_t i : all_)
-      if (i != p && is_fixed_[i]) order.push_back(i);
-    for (std::size_t i : all_)
-      if (i != p && !is_fixed_[i]) order.push_back(i);
-    SequenceStep s;
-    s.parts = {p};
-    const auto t0 = Clock::now();
-    const std::vector<const Body*> obstacles = others({p}, all_);
-    const Body& moving = bodies_[p];
-    const double threshold = settings_.clearance + settings_.tolerance;
-    for (const Vec3& d : contact::pull_directions(moving, obstacles, threshold, known_contacts(p))) {
-      const double length = contact::exit_length(moving, obstacles, d, exit_margin());
-      SequenceStep::Blocking b{d, {}};
-      bool by_fixed = false;
-      for (std::size_t i : order) {
-        if (by_fixed && !is_fixed_[i]) break;
-        if (!contact::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_)) {
-          b.blockers.push_back(i);
-          by_fixed = by_fixed || is_fixed_[i];
-        }
-      }
-      std::sort(b.blockers.begin(), b.blockers.end());
-      s.blocking.push_back(std::move(b));
-    }
-    s.time_ms = ms_since(t0);
-    block_[p] = std::move(s);
+    block_[p] = blocking_of(p, all_, 0, /*fixed_first=*/true);
     return *block_[p];
   }
   // The contact facets of part p with every other part (as find_contacts finds them).
@@ -520,8 +494,11 @@ class Sequencer {
   }
 
   // For a part that stays: along each direction of local freedom, the parts that block a pull
-  // on their own (the directional blocking graph, Wilson & Latombe 1994).
-  SequenceStep blocking_of(std::size_t part, const std::vector<std::size_t>& remaining, int round) {
+  // on their own (the directional blocking graph, Wilson & Latombe 1994), in index order. With
+  // `fixed_first` the fixed parts are tried first, and a direction one of them blocks lists the
+  // fixed parts that block it and nothing else (it can never be freed).
+  SequenceStep blocking_of(std::size_t part, const std::vector<std::size_t>& remaining, int round,
+                           bool fixed_first = false) {
     SequenceStep s;
     s.parts = {part};
     s.round = round;
@@ -529,12 +506,22 @@ class Sequencer {
     const std::vector<const Body*> obstacles = others({part}, remaining);
     const Body& moving = bodies_[part];
     const double threshold = settings_.clearance + settings_.tolerance;
+    std::vector<std::size_t> order;
+    for (std::size_t i : remaining)
+      if (i != part) order.push_back(i);
+    if (fixed_first) std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return is_fixed_[i]; });
     for (const Vec3& d : contact::pull_directions(moving, obstacles, threshold, known_contacts(part))) {
       const double length = contact::exit_length(moving, obstacles, d, exit_margin());
       SequenceStep::Blocking b{d, {}};
-      for (std::size_t i : remaining)
-        if (i != part && !contact::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_))
+      bool by_fixed = false;
+      for (std::size_t i : order) {
+        if (by_fixed && !is_fixed_[i]) break;
+        if (!contact::pull_is_clear(moving, {&bodies_[i]}, d, length, settings_, queries_)) {
           b.blockers.push_back(i);
+          by_fixed = by_fixed || (fixed_first && is_fixed_[i]);
+        }
+      }
+      std::sort(b.blockers.begin(), b.blockers.end());
       s.blocking.push_back(std::move(b));
     }
     s.time_ms = ms_since(t0);
@@ -548,14 +535,7 @@ Result<PartProblem> part_problem(const Assembly& assembly, const std::vector<std
                                  const std::vector<std::size_t>& present, const DisassemblyOptions& options) {
   TriangleSoup obstacles, body;
   auto add = [](TriangleSoup& to, const TriangleSoup& from) {
-    if (!from.cylinders.empty() || !to.cylinder_of.empty()) {
-      to.cylinder_of.resize(to.triangles.size(), -1);
-      const auto base = static_cast<std::int32_t>(to.cylinders.size());
-      if (from.cylinder_of.empty()) to.cylinder_of.insert(to.cylinder_of.end(), from.triangles.size(), -1);
-      for (std::int32_t f : from.cylinder_of) to.cylinder_of.push_back(f < 0 ? -1 : base + f);
-      to.cylinders.insert(to.cylinders.end(), from.cylinders.begin(), from.cylinders.end());
-    }
-    to.triangles.insert(to.triangles.end(), from.triangles.begin(), from.triangles.end());
+    append_placed(to, from);
     to.name += (to.name.empty() ? "" : "+") + from.name;
   };
   for (std::size_t i : present) {

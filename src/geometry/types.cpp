@@ -1,5 +1,7 @@
 #include "swept/geometry/types.h"
 
+#include "swept/geometry/pose.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,6 +45,25 @@ bool cylinders_usable(const TriangleSoup& m) {
              std::isfinite(c.radius) && c.radius > 0.0 && std::isfinite(c.deviation) && c.deviation >= 0.0;
   for (std::int32_t k : m.cylinder_of) usable = usable && k >= -1 && k < static_cast<std::int32_t>(m.cylinders.size());
   return usable;
+}
+
+void append_placed(TriangleSoup& to, const TriangleSoup& from, const Pose& pose) {
+  const bool identity = pose.rotation == Mat3::Identity() && pose.translation == Vec3::Zero();
+  if (!from.cylinders.empty() || !to.cylinder_of.empty()) {
+    to.cylinder_of.resize(to.triangles.size(), -1);
+    const auto base = static_cast<std::int32_t>(to.cylinders.size());
+    if (from.cylinder_of.empty()) to.cylinder_of.insert(to.cylinder_of.end(), from.triangles.size(), -1);
+    for (std::int32_t f : from.cylinder_of) to.cylinder_of.push_back(f < 0 ? -1 : base + f);
+    for (CadCylinder c : from.cylinders) {
+      if (!identity) c.origin = pose.apply(c.origin), c.axis = pose.rotation * c.axis;
+      to.cylinders.push_back(c);
+    }
+  }
+  if (identity) {
+    to.triangles.insert(to.triangles.end(), from.triangles.begin(), from.triangles.end());
+  } else {
+    for (const Triangle& t : from.triangles) to.triangles.push_back({pose.apply(t.p), pose.apply(t.q), pose.apply(t.r)});
+  }
 }
 
 }  // namespace swept

@@ -2,6 +2,8 @@
 // (non-finite coordinates, empty results, degenerate-triangle counting); write_stl_binary().
 #include "swept/io/mesh_io.h"
 
+#include "swept/geometry/pose.h"
+
 #include "swept/io/file_write.h"
 
 #include "import_detail.h"
@@ -82,16 +84,7 @@ TriangleSoup ImportedModel::merged() const {
   TriangleSoup all;
   all.name = std::filesystem::path(file).stem().string();
   all.triangles.reserve(triangle_count());
-  bool cad = false;
-  for (const TriangleSoup& p : parts) cad = cad || !p.cylinders.empty();
-  for (const TriangleSoup& p : parts) {
-    all.triangles.insert(all.triangles.end(), p.triangles.begin(), p.triangles.end());
-    if (!cad) continue;
-    const auto base = static_cast<std::int32_t>(all.cylinders.size());
-    if (p.cylinder_of.empty()) all.cylinder_of.insert(all.cylinder_of.end(), p.triangles.size(), -1);
-    for (std::int32_t f : p.cylinder_of) all.cylinder_of.push_back(f < 0 ? -1 : base + f);
-    all.cylinders.insert(all.cylinders.end(), p.cylinders.begin(), p.cylinders.end());
-  }
+  for (const TriangleSoup& p : parts) append_placed(all, p);
   return all;
 }
 

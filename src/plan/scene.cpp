@@ -87,19 +87,7 @@ Result<PlanScene> load_scene(const Problem& problem, const BuildConfig& config) 
       if (!cylinders_usable(soup)) soup.cylinder_of.clear(), soup.cylinders.clear();
       if (soup.triangles.empty()) return Error{ref.file.string() + ": the mesh has no triangles"};
       // The CAD's cylinders come along, placed, for the contact model's mates (TriangleSoup).
-      if (!soup.cylinders.empty()) {
-        out.cylinder_of.resize(out.triangles.size(), -1);
-        const auto base = static_cast<std::int32_t>(out.cylinders.size());
-        for (std::int32_t f : soup.cylinder_of) out.cylinder_of.push_back(f < 0 ? -1 : base + f);
-        for (CadCylinder c : soup.cylinders) {
-          c.origin = ref.pose.apply(c.origin);
-          c.axis = ref.pose.rotation * c.axis;
-          out.cylinders.push_back(c);
-        }
-      }
-      for (const Triangle& t : soup.triangles)
-        out.triangles.push_back({ref.pose.apply(t.p), ref.pose.apply(t.q), ref.pose.apply(t.r)});
-      if (!out.cylinder_of.empty()) out.cylinder_of.resize(out.triangles.size(), -1);
+      append_placed(out, soup, ref.pose);
       if (!out.name.empty()) out.name += "+";
       out.name += soup.name;
     }

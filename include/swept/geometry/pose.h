@@ -76,4 +76,9 @@ inline double rotation_angle(const Mat3& a, const Mat3& b) {
   return 2.0 * std::acos(w);
 }
 
+/// Appends `from`'s triangles to `to`, placed by `pose` (copied as they are for the identity),
+/// with its CAD cylinders placed the same way and `cylinder_of` renumbered; once either soup has
+/// cylinders, the triangles without one are marked −1.
+void append_placed(TriangleSoup& to, const TriangleSoup& from, const Pose& pose = {});
+
 }  // namespace swept
