@@ -122,7 +122,7 @@ struct DistanceSearch {
   /// positive distance: the leaf pairs first try the gap along it (triangle_distance_below).
   /// Far apart it settles about half of the triangle pairs that would otherwise be evaluated in
   /// full only to end above the answer (counted on the shared CAD and robot pairs,
-  /// docs/fitters.md "The gap along the answer's direction").
+  /// docs/lab/fitters-history.md "The gap along the answer's direction").
   bool have_axis = false;
   Vec3 axis = Vec3::Zero();
   double scale = 0.0;  ///< bounds every coordinate a triangle test sees (A's frame), set by run()
@@ -169,7 +169,7 @@ struct DistanceSearch {
   // dives the waiting pair of smallest bound starts the next dive (best first, a binary heap):
   // in near contact this finds a close pair before the depth-first order would, and the answer
   // then prunes everything else (measured on two CAD pairs: 20-31 % fewer node pairs and 27-41 %
-  // less time near contact, 9-23 % and 5-20 % far apart; docs/fitters.md "Traversal order").
+  // less time near contact, 9-23 % and 5-20 % far apart; docs/lab/fitters-history.md "Traversal order").
   // After that the waiting pairs are sorted, the smallest bound on top, and the search goes on
   // depth first: a heap over a whole far-apart query costs more than the pairs it saves (best
   // first throughout was 5-24 % slower than depth first far apart). Ties are broken by node
@@ -336,7 +336,7 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   // No first-contact search before the distance search: the search ends at its first touching
   // pair, and near contact the contact search's node pairs (every pair of overlapping RSSs) are
   // ones the distance search must open anyway, so running it first only doubled them (a third of
-  // a near-contact query's time; docs/fitters.md, "No contact search first").
+  // a near-contact query's time; docs/lab/fitters-history.md, "No contact search first").
   warm.stop_below = cold.stop_below = request.stop_below;
   if (warm.have_witness && warm.best == 0.0) {
     used = &warm;  // nothing is closer than 0
