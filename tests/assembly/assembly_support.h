@@ -132,7 +132,7 @@ inline std::vector<std::array<bool, 3>> creases_of(const std::vector<Triangle>& 
   return out;
 }
 
-/// The independent check of a straight pull (docs/planner.md, "Assemblies: the contact
+/// The independent check of a straight pull (docs/planner.md, "The contact
 /// model"): at `samples` + 1 poses along it, every triangle pair of the moving parts and the parts
 /// still in place, by the oracle's exact triangle distance. A pair closer than the clearance must
 /// not interpenetrate by more than the tolerance: on some separating axis oriented by the solids'

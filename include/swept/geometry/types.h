@@ -43,7 +43,7 @@ double aspect_ratio(const Triangle& t);
 
 /// A cylindrical B-rep face, as the CAD reader (OpenCASCADE) gives it: the surface its triangles
 /// approximate. The contact model of assemblies slides mated cylinders along their axis by the
-/// surfaces, not by their facets (docs/planner.md, "Assemblies: the contact model").
+/// surfaces, not by their facets (docs/planner.md, "The contact model").
 struct CadCylinder {
   Vec3 origin = Vec3::Zero();  ///< a point of the axis, in the soup's frame and unit
   Vec3 axis = Vec3::UnitZ();   ///< unit direction of the axis (either sign)
