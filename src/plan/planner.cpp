@@ -48,7 +48,7 @@ using detail::PlanContext;
 // console) it finds nothing within any budget tried, and its expansions only keep a core from the
 // trees: 64 against 150 gives the same paths everywhere and the trees that core sooner. Larger
 // budgets held the trees back more (500 against 150: 5–20 % more search time; 2000: 0.1–3 s
-// more), and 50 left the air cleaner to the trees (2.9× slower). docs/bench-plan.md.
+// more), and 50 left the air cleaner to the trees (2.9× slower). docs/lab/bench-plan-history.md.
 constexpr std::size_t kGridBudget = 64;
 
 // Coordinates far beyond the scene lose the precision the distance bounds rely on (a query at

@@ -13,7 +13,7 @@ namespace {
 // suite: the cubicles' smoothing 44 -> 18 ms at 256, its path no longer and no closer to the
 // obstacles; no other problem's path changed but the spiral tube's). 192 against 256: the
 // cubicles' whole plan 4 % fewer instructions, the same paths but the spiral tube's (0.07 %
-// shorter); at 128 the cubicles' path changes. docs/bench-plan.md.
+// shorter); at 128 the cubicles' path changes. docs/lab/planner-history.md.
 constexpr int kShortcutQueries = 192;
 
 }  // namespace

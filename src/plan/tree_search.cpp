@@ -42,7 +42,7 @@ constexpr int kConnectSteps = 64;
 // twisty slot and tunnel console 3-17 % less search time, 0-1.3 % more queries). 0.03 against
 // 0.1, instructions of a whole one-thread plan: house -5 %, cubicles -1 %, the rest within 1 %;
 // the same paths, but for the tunnel console's and the cylinder head's, whose waypoints moved by
-// rounding (lengths equal to 13 digits). docs/bench-plan.md.
+// rounding (lengths equal to 13 digits). docs/lab/bench-plan-history.md.
 constexpr double kNodeReach = 0.03;
 // A lazy step (past its start's free ball) is taken when its end is free and so are these points
 // of its interior: its middle, and on a step longer than kLazyLong of the longest, its quarters
@@ -50,19 +50,17 @@ constexpr double kNodeReach = 0.03;
 // thin walls, whose lazy edges then fail when a path needs them. Over seeds 0-39 on both sides
 // (bench_plan --swept-seeds, two threads), swept's median: house 23.3 -> 17.9 ms, cubicles
 // 36.1 -> 26.9 ms (2.66x -> 3.56x RRTConnect's); three points on every step: 17.4 and 29.0 in
-// a scratch run. docs/bench-plan.md.
+// a scratch run. docs/lab/bench-plan-history.md, "A long lazy step's quarters checked".
 constexpr std::array<double, 3> kLazyPoints{0.5, 0.25, 0.75};
 constexpr double kLazyLong = 0.75;
 
 // The longest step beyond a node's free ball, as a share of the bounds' diagonal; the tries of a
 // step (the first, then halved toward its start); slides along the obstacles after a blocked step
 // of the growing tree; the other tree reaches for the new node straight until blocked, without
-// slides (RRTConnect's connect). Chosen together, 2026-12-01, against 0.1, 6, 8 and 8 (each
-// alone, earlier, moved little): over seeds 0-9 at two threads, medians, OMPL.app's cubicles
-// 896 -> 332 ms, Home 1,281 -> 673, Twistycool 1,093 -> 122, Abstract 129 -> 107; the suite's
-// cubicles 36 -> 17, bug trap 32 -> 26, house 25 -> 23, twisty slot 15 -> 14, spiral tube
-// 1,035 -> 982; the tunnel console 325 -> 119 and the cylinder head 584 -> 238 over seeds 0-4.
-// docs/bench-plan.md, "Fewer tries per step".
+// slides (RRTConnect's connect). Chosen together against 0.1, 6, 8 and 8 (each alone had moved
+// little): together they halve the time or better on OMPL.app's cubicles, Home and Twistycool,
+// the suite's cubicles and two of the CAD scenes, and slow no problem of the suite
+// (docs/lab/bench-plan-history.md, "Fewer tries per step").
 constexpr double kStepShare = 0.2;
 constexpr int kStepTries = 2;
 constexpr int kSlides = 2;

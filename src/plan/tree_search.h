@@ -118,11 +118,8 @@ class TreeSearch {
 
   /// The nearest node is by the motion metric with its rotation's part weighted by this: by
   /// r/2, about the mean displacement of the body's points in a turn, not r, its farthest
-  /// point's. Against 1, medians over seeds 0-19 at two threads (2026-12-02): OMPL.app's
-  /// cubicles 412 -> 231 ms, Home 792 -> 769, Twistycool 134 -> 108, Abstract 128 -> 93;
-  /// Twistycooler at seeds 0-2 9.8, 37.6, 51.9 -> 4.9, 6.5, 19.6 s; the suite's spiral tube
-  /// 1.11 -> 0.83 s (seeds 0-9); the suite's other problems and the CAD scenes within their
-  /// noise. 0.35: Abstract 176 ms. docs/bench-plan.md.
+  /// point's, so that the trees extend from nearby places more than from nearby orientations.
+  /// Chosen over 1, 0.7 and 0.35 by medians over seeds (docs/lab/planner-history.md).
   static constexpr double kNearestTurnWeight = 0.5;
   /// Index of the node of `tree` nearest to `pose` in the motion metric, the rotation's part
   /// weighted by kNearestTurnWeight (ties: the lowest index).
