@@ -13,7 +13,7 @@ namespace swept::bench {
 namespace {
 
 TEST(OmplPeer, SimplifiesEachSolutionApartFromTheSolve) {
-  // The L-tunnel: RRTConnect solves it in milliseconds (docs/bench-plan.md).
+  // The L-tunnel: RRTConnect solves it in milliseconds (docs/lab/bench-plan-history.md).
   const scenes::GeneratedProblem g = scenes::l_tunnel();
   auto scene = make_scene(g.obstacles, g.body, g.problem.build, g.problem.reference_point);
   ASSERT_TRUE(scene) << scene.error().message;
