@@ -107,14 +107,13 @@ void finish_body(Body& b, const std::vector<std::size_t>& sizes) {
 
 }  // namespace
 
-std::vector<ContactFacet> contact_facets(const TrianglePairs& pairs, std::size_t obstacle_triangles,
-                                         std::size_t moving_triangles) {
+std::vector<ContactFacet> touching_facets(const Body& obstacle, const Body& moving, double threshold) {
+  const ProximityTrianglesResult near =
+      proximity_triangles(*obstacle.tree, obstacle.pose, *moving.tree, moving.pose, {.threshold = threshold});
   std::vector<ContactFacet> out;
-  std::vector<bool> seen_obstacle(obstacle_triangles, false), seen_moving(moving_triangles, false);
-  for (const ContactPair& p : pairs.pairs) {
-    if (!seen_obstacle[p.triangle_a]) seen_obstacle[p.triangle_a] = true, out.push_back({p.triangle_a, false});
-    if (!seen_moving[p.triangle_b]) seen_moving[p.triangle_b] = true, out.push_back({p.triangle_b, true});
-  }
+  out.reserve(near.a.size() + near.b.size());
+  for (std::uint32_t t : near.a) out.push_back({t, false});
+  for (std::uint32_t t : near.b) out.push_back({t, true});
   return out;
 }
 
@@ -226,7 +225,7 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
                                   const std::function<const std::vector<ContactFacet>*(const Body& obstacle)>& contacts) {
   std::vector<Vec3> out{Vec3::UnitZ(), -Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
   // Contact normals by contact area (each touching triangle's area once per obstacle it touches),
-  // ties by first appearance (obstacle order, then pair order). A normal joins the first-made
+  // ties by first appearance (obstacle order, then touching_facets' order). A normal joins the first-made
   // group whose normal is within 1e-9 of its direction (e·n > 1 − 1e-9, so |e − n| < 4.5e-5);
   // the groups are found through a grid of that cell size, so that a large contact (every facet
   // of a fine cylinder its own normal) costs n log n, not n².
@@ -261,8 +260,7 @@ std::vector<Vec3> pull_directions(const Body& moving, const std::vector<const Bo
     const std::vector<ContactFacet>* known = contacts ? contacts(*o) : nullptr;
     std::vector<ContactFacet> found;
     if (!known)
-      found = contact_facets(proximity_pairs(*o->tree, o->pose, *moving.tree, moving.pose, {.threshold = threshold}).pairs,
-                             o->triangles.size(), moving.triangles.size());
+      found = touching_facets(*o, moving, threshold);
     for (const ContactFacet& f : known ? *known : found) {
       if (f.moving) add(-moving.planes[f.triangle].normal, moving.triangles[f.triangle]);
       else add(o->planes[f.triangle].normal, o->triangles[f.triangle]);

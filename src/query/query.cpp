@@ -417,6 +417,90 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
   return out;
 }
 
+namespace {
+
+// Which triangles of a tree are known to be near: a flag per triangle (by position), and a node
+// is `done` once every triangle under it is flagged. A leaf counts its unflagged triangles; a
+// flagged leaf marks its ancestors done while both children of each are.
+class NearMarks {
+ public:
+  explicit NearMarks(const Bvh& t)
+      : tree_(t), flagged_(t.triangles.size(), 0), done_(t.nodes.size(), 0), parent_(t.nodes.size(), -1),
+        leaf_of_(t.triangles.size(), 0), left_(t.nodes.size(), 0) {
+    for (std::size_t n = 0; n < t.nodes.size(); ++n) {
+      const Node& node = t.nodes[n];
+      if (node.is_leaf()) {
+        left_[n] = node.count;
+        for (std::int32_t i = node.first; i < node.first + node.count; ++i) leaf_of_[i] = static_cast<std::int32_t>(n);
+      } else {
+        parent_[node.first] = parent_[node.first + 1] = static_cast<std::int32_t>(n);
+      }
+    }
+  }
+  bool flagged(std::int32_t i) const { return flagged_[i] != 0; }
+  bool done(std::int32_t n) const { return done_[n] != 0; }
+  void flag(std::int32_t i) {
+    if (flagged_[i]) return;
+    flagged_[i] = 1;
+    std::int32_t n = leaf_of_[i];
+    if (--left_[n] > 0) return;
+    done_[n] = 1;
+    for (std::int32_t p = parent_[n]; p >= 0; p = parent_[p]) {
+      const std::int32_t c = tree_.nodes[p].first;
+      if (!done_[c] || !done_[c + 1]) break;
+      done_[p] = 1;
+    }
+  }
+  std::vector<std::uint32_t> ids() const {
+    std::vector<std::uint32_t> out;
+    for (std::size_t i = 0; i < flagged_.size(); ++i)
+      if (flagged_[i]) out.push_back(tree_.triangle_ids[i]);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+ private:
+  const Bvh& tree_;
+  std::vector<char> flagged_, done_;
+  std::vector<std::int32_t> parent_, leaf_of_, left_;
+};
+
+}  // namespace
+
+ProximityTrianglesResult proximity_triangles(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                                             const ProximityRequest& request) {
+  ProximityTrianglesResult out;
+  const double threshold = request.threshold;
+  if (a.empty() || b.empty() || !(threshold > 0.0)) return out;
+  const Relative rel(pose_a, pose_b);
+  NearMarks ma(a), mb(b);
+  auto near = [&](std::int32_t ia, std::int32_t ib, const Rss& na, detail::PlacedRss& pb) {
+    if (ma.done(ia) && mb.done(ib)) return false;
+    ++out.stats.bv_tests;
+    const double radii = na.radius + pb.rss.radius;
+    return detail::lower_bound(na, pb, threshold + radii, false) - radii < threshold;
+  };
+  auto leaves = [&](const Node& na, const Node& nb) {
+    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+      const Triangle tb = rel.apply(b.triangles[j]);
+      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+        if (ma.flagged(i) && mb.flagged(j)) continue;
+        ++out.stats.triangle_tests;
+        TriangleDistance d;
+        if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold) {
+          ma.flag(i);
+          mb.flag(j);
+        }
+      }
+    }
+    return true;
+  };
+  detail::for_each_leaf_pair(a, b, rel, near, leaves);
+  out.a = ma.ids();
+  out.b = mb.ids();
+  return out;
+}
+
 CollideResult collide(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
                       const CollideRequest& request) {
   const Relative rel(pose_a, pose_b);

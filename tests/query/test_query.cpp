@@ -16,6 +16,7 @@
 #include <numbers>
 #include <string>
 #include <thread>
+#include <set>
 #include <vector>
 
 namespace swept {
@@ -254,6 +255,14 @@ TEST_P(QueryOracle, CollideDistanceToleranceMatchBruteForce) {
         for (std::size_t i = 0; i < near.size(); ++i) {
           EXPECT_EQ(pr.pairs.pairs[i].triangle_a, near[i].triangle_a);
           EXPECT_EQ(pr.pairs.pairs[i].triangle_b, near[i].triangle_b);
+        }
+        // The near triangles of each side: exactly the ones the brute-force pairs name.
+        {
+          std::set<std::uint32_t> want_a, want_b;
+          for (const ContactPair& p : near) want_a.insert(p.triangle_a), want_b.insert(p.triangle_b);
+          const ProximityTrianglesResult pt = proximity_triangles(a, pa, b, pb, {.threshold = threshold});
+          EXPECT_EQ(pt.a, std::vector<std::uint32_t>(want_a.begin(), want_a.end()));
+          EXPECT_EQ(pt.b, std::vector<std::uint32_t>(want_b.begin(), want_b.end()));
         }
         const DistanceResult dx = distance(a, pa, b, pb, {.exclude = &pr.pairs});
         if (std::isfinite(rest)) {

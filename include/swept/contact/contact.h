@@ -127,10 +127,10 @@ struct ContactFacet {
   std::uint32_t triangle = 0;
   bool moving = false;
 };
-/// The triangles of `pairs` (as `proximity_pairs(obstacle, moving)` gives them), each once, in the
-/// order the pairs first name them (a pair's obstacle triangle before its moving one).
-std::vector<ContactFacet> contact_facets(const TrianglePairs& pairs, std::size_t obstacle_triangles,
-                                         std::size_t moving_triangles);
+/// The triangles of the contact of `moving` with `obstacle` at their poses: every triangle of
+/// either closer than `threshold` to a triangle of the other (proximity_triangles), each once,
+/// the obstacle's in index order, then the moving body's.
+std::vector<ContactFacet> touching_facets(const Body& obstacle, const Body& moving, double threshold);
 
 /// Gap between two boxes (0 when they overlap).
 double box_gap(const Aabb& a, const Aabb& b);
@@ -139,7 +139,7 @@ double box_gap(const Aabb& a, const Aabb& b);
 /// obstacle triangles the body touches (within `threshold`) and the reversed normals of its own
 /// touching triangles, by contact area (at most 8), then the cross products of pairs of them
 /// (cylinder axes, both signs, at most 8 axes); each direction once.
-/// `contacts`, when given, returns the contact_facets of an obstacle with `moving` (at
+/// `contacts`, when given, returns the touching_facets of an obstacle with `moving` (at
 /// `threshold`) when they are known, else null.
 std::vector<Vec3> pull_directions(
     const Body& moving, const std::vector<const Body*>& obstacles, double threshold,

@@ -118,6 +118,18 @@ struct ProximityResult {
 ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
                                 const ProximityRequest& request);
 
+/// The triangles of each tree closer than the threshold to some triangle of the other: the same
+/// triangles as the pairs of proximity_pairs name, without enumerating the pairs (a node pair is
+/// skipped once every triangle under both nodes is known to be near, a triangle pair once both
+/// are). What a contact's facets need on fine mates, where each triangle has many near partners.
+struct ProximityTrianglesResult {
+  std::vector<std::uint32_t> a;  ///< input indices of A's near triangles, ascending
+  std::vector<std::uint32_t> b;  ///< input indices of B's near triangles, ascending
+  QueryStats stats;
+};
+ProximityTrianglesResult proximity_triangles(const Bvh& a, const Pose& pose_a, const Bvh& b, const Pose& pose_b,
+                                             const ProximityRequest& request);
+
 // ---- tolerance ---------------------------------------------------------------------------------
 struct ToleranceRequest {
   double tolerance = 0.0;  ///< in the model unit
