@@ -1,6 +1,7 @@
 #pragma once
 // Internal to swept_assembly: an assembly's parts as bodies of the contact layer (contact.h).
 #include "swept/assembly/assembly.h"
+#include "swept/assembly/disassemble.h"
 #include "swept/contact/contact.h"
 
 #include <vector>
@@ -14,5 +15,10 @@ inline contact::Body make_body(const Assembly& assembly, const std::vector<std::
   for (std::size_t i : parts) soups.push_back(&assembly.parts[i].mesh);
   return contact::make_body(soups, config);
 }
+
+/// find_interferences over bodies already made (one per part, at the mounted poses), for the
+/// pairs with at least one part `among`.
+std::vector<Interference> interferences(const std::vector<contact::Body>& bodies, double tolerance,
+                                        const std::vector<bool>& among);
 
 }  // namespace swept::assembly_detail

@@ -127,6 +127,14 @@ class Sequencer {
           if (!seen[q] && !is_fixed[q]) seen[q] = true, stack.push_back(q);
     }
     std::sort(relevant.begin(), relevant.end());
+    {
+      // Interferences where they can matter: the pairs with a part the targets may need off.
+      const auto ti = Clock::now();
+      std::vector<bool> among(n, false);
+      for (std::size_t p : relevant) among[p] = true;
+      out.interferences = assembly_detail::interferences(bodies_, settings_.tolerance, among);
+      out.time_ms.interference = ms_since(ti);
+    }
     std::vector<Removal> level{Removal{}};
     std::set<std::vector<std::size_t>> visited{{}};
     std::optional<Removal> found;
@@ -221,9 +229,7 @@ class Sequencer {
     std::vector<std::vector<contact::ContactFacet>> out(n);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t j) {
       if (j == p || contact::box_gap(bodies_[j].box, bodies_[p].box) > threshold) return;
-      const ProximityResult near =
-          proximity_pairs(*bodies_[j].tree, bodies_[j].pose, *bodies_[p].tree, bodies_[p].pose, {.threshold = threshold});
-      out[j] = contact::contact_facets(near.pairs, bodies_[j].triangles.size(), bodies_[p].triangles.size());
+      out[j] = contact::touching_facets(bodies_[j], bodies_[p], threshold);
     });
     return out;
   }
@@ -277,8 +283,9 @@ class Sequencer {
     return out;
   }
 
-  // What both runs start with: the bodies, the interferences, the fixed parts, and (all of them
-  // at once, `contacts`; else part by part when asked, contacts_of) the contacts.
+  // What both runs start with: the bodies and the fixed parts; with `contacts`, the
+  // interferences of every pair and all the contacts at once (else the caller asks for what it
+  // needs: contacts_of part by part, interferences of the pairs it moves).
   std::vector<bool> prepare(DisassemblyResult& out, bool contacts = true) {
     out.tolerance = settings_.tolerance;
     const std::size_t n = a_.parts.size();
@@ -287,9 +294,11 @@ class Sequencer {
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies_[i] = assembly_detail::make_body(a_, {i}, {}); });
     size_ = assembly_size(bodies_);
     out.time_ms.build = ms_since(t0);
-    t0 = Clock::now();
-    out.interferences = find_interferences(a_, settings_.tolerance);
-    out.time_ms.interference = ms_since(t0);
+    if (contacts) {
+      t0 = Clock::now();
+      out.interferences = assembly_detail::interferences(bodies_, settings_.tolerance, std::vector<bool>(n, true));
+      out.time_ms.interference = ms_since(t0);
+    }
     out.fixed = fixed_parts();
     std::vector<bool> is_fixed(n, false);
     for (std::size_t i : out.fixed) is_fixed[i] = true;
@@ -306,7 +315,7 @@ class Sequencer {
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
   /// contacts_[i][j]: the triangles of the contact of part j (the obstacle) with movable part i at
-  /// the mounted poses (contact::contact_facets), for pull_directions, which asks for
+  /// the mounted poses (contact::touching_facets), for pull_directions, which asks for
   /// them in every round.
   std::vector<std::vector<std::vector<contact::ContactFacet>>> contacts_;
   std::atomic<std::uint64_t> queries_{0};
@@ -373,9 +382,7 @@ class Sequencer {
           pairs.push_back({i, j});
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
       const auto [i, j] = pairs[k];
-      const ProximityResult near =
-          proximity_pairs(*bodies_[j].tree, bodies_[j].pose, *bodies_[i].tree, bodies_[i].pose, {.threshold = threshold});
-      out[i][j] = contact::contact_facets(near.pairs, bodies_[j].triangles.size(), bodies_[i].triangles.size());
+      out[i][j] = contact::touching_facets(bodies_[j], bodies_[i], threshold);
     });
     return out;
   }
@@ -510,7 +517,11 @@ class Sequencer {
     for (std::size_t i : remaining)
       if (i != part) order.push_back(i);
     if (fixed_first) std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return is_fixed_[i]; });
-    for (const Vec3& d : contact::pull_directions(moving, obstacles, threshold, known_contacts(part))) {
+    const std::vector<Vec3> directions = contact::pull_directions(moving, obstacles, threshold, known_contacts(part));
+    s.blocking.resize(directions.size());
+    // Directions are independent: each task fills its own entry.
+    tbb::parallel_for(std::size_t{0}, directions.size(), [&](std::size_t k) {
+      const Vec3& d = directions[k];
       const double length = contact::exit_length(moving, obstacles, d, exit_margin());
       SequenceStep::Blocking b{d, {}};
       bool by_fixed = false;
@@ -522,8 +533,8 @@ class Sequencer {
         }
       }
       std::sort(b.blockers.begin(), b.blockers.end());
-      s.blocking.push_back(std::move(b));
-    }
+      s.blocking[k] = std::move(b);
+    });
     s.time_ms = ms_since(t0);
     return s;
   }

@@ -17,9 +17,16 @@ std::vector<Interference> find_interferences(const Assembly& assembly, double to
   const std::size_t n = assembly.parts.size();
   std::vector<contact::Body> bodies(n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies[i] = assembly_detail::make_body(assembly, {i}, {}); });
+  return assembly_detail::interferences(bodies, tolerance, std::vector<bool>(n, true));
+}
+
+std::vector<Interference> assembly_detail::interferences(const std::vector<contact::Body>& bodies, double tolerance,
+                                                         const std::vector<bool>& among) {
+  const std::size_t n = bodies.size();
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
+      if (!among[i] && !among[j]) continue;
       const Aabb& a = bodies[i].box;
       const Aabb& b = bodies[j].box;
       if ((a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all()) pairs.push_back({i, j});
