@@ -377,6 +377,33 @@ DistanceResult distance_relative(const Bvh& a, const Pose& pose_a, const Bvh& b,
   return out;
 }
 
+// Every triangle pair (positions i of A, j of B) closer than the threshold, to `near(i, j)`;
+// node pairs with `skip_nodes(ia, ib)` and triangle pairs with `skip(i, j)` are not looked at.
+// A node pair whose RSS lower bound reaches the threshold holds no such pair.
+template <class SkipNodes, class Skip, class Near>
+void for_each_near_pair(const Bvh& a, const Bvh& b, const Relative& rel, double threshold, QueryStats& stats,
+                        SkipNodes&& skip_nodes, Skip&& skip, Near&& near) {
+  auto keep = [&](std::int32_t ia, std::int32_t ib, const Rss& na, detail::PlacedRss& pb) {
+    if (skip_nodes(ia, ib)) return false;
+    ++stats.bv_tests;
+    const double radii = na.radius + pb.rss.radius;
+    return detail::lower_bound(na, pb, threshold + radii, false) - radii < threshold;
+  };
+  auto leaves = [&](const Node& na, const Node& nb) {
+    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+      const Triangle tb = rel.apply(b.triangles[j]);
+      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+        if (skip(i, j)) continue;
+        ++stats.triangle_tests;
+        TriangleDistance d;
+        if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold) near(i, j);
+      }
+    }
+    return true;
+  };
+  detail::for_each_leaf_pair(a, b, rel, keep, leaves);
+}
+
 }  // namespace
 
 bool TrianglePairs::contains(std::uint32_t triangle_a, std::uint32_t triangle_b) const {
@@ -389,26 +416,10 @@ ProximityResult proximity_pairs(const Bvh& a, const Pose& pose_a, const Bvh& b, 
   ProximityResult out;
   const double threshold = request.threshold;
   if (a.empty() || b.empty() || !(threshold > 0.0)) return out;
-  const Relative rel(pose_a, pose_b);
-  // A node pair whose RSS lower bound reaches the threshold holds no reported pair.
-  auto near = [&](std::int32_t, std::int32_t, const Rss& na, detail::PlacedRss& pb) {
-    ++out.stats.bv_tests;
-    const double radii = na.radius + pb.rss.radius;
-    return detail::lower_bound(na, pb, threshold + radii, false) - radii < threshold;
-  };
-  auto leaves = [&](const Node& na, const Node& nb) {
-    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
-      const Triangle tb = rel.apply(b.triangles[j]);
-      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
-        ++out.stats.triangle_tests;
-        TriangleDistance d;
-        if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold)
-          out.pairs.pairs.push_back({a.triangle_ids[i], b.triangle_ids[j]});
-      }
-    }
-    return true;
-  };
-  detail::for_each_leaf_pair(a, b, rel, near, leaves);
+  for_each_near_pair(
+      a, b, Relative(pose_a, pose_b), threshold, out.stats, [](std::int32_t, std::int32_t) { return false; },
+      [](std::int32_t, std::int32_t) { return false; },
+      [&](std::int32_t i, std::int32_t j) { out.pairs.pairs.push_back({a.triangle_ids[i], b.triangle_ids[j]}); });
   auto& v = out.pairs.pairs;
   sort_pairs(v);
   v.erase(std::unique(v.begin(), v.end(), [](const ContactPair& x, const ContactPair& y) {
@@ -472,30 +483,15 @@ ProximityTrianglesResult proximity_triangles(const Bvh& a, const Pose& pose_a, c
   ProximityTrianglesResult out;
   const double threshold = request.threshold;
   if (a.empty() || b.empty() || !(threshold > 0.0)) return out;
-  const Relative rel(pose_a, pose_b);
   NearMarks ma(a), mb(b);
-  auto near = [&](std::int32_t ia, std::int32_t ib, const Rss& na, detail::PlacedRss& pb) {
-    if (ma.done(ia) && mb.done(ib)) return false;
-    ++out.stats.bv_tests;
-    const double radii = na.radius + pb.rss.radius;
-    return detail::lower_bound(na, pb, threshold + radii, false) - radii < threshold;
-  };
-  auto leaves = [&](const Node& na, const Node& nb) {
-    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
-      const Triangle tb = rel.apply(b.triangles[j]);
-      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
-        if (ma.flagged(i) && mb.flagged(j)) continue;
-        ++out.stats.triangle_tests;
-        TriangleDistance d;
-        if (triangle_distance_below(a.triangles[i], tb, threshold, d) && d.distance < threshold) {
-          ma.flag(i);
-          mb.flag(j);
-        }
-      }
-    }
-    return true;
-  };
-  detail::for_each_leaf_pair(a, b, rel, near, leaves);
+  for_each_near_pair(
+      a, b, Relative(pose_a, pose_b), threshold, out.stats,
+      [&](std::int32_t ia, std::int32_t ib) { return ma.done(ia) && mb.done(ib); },
+      [&](std::int32_t i, std::int32_t j) { return ma.flagged(i) && mb.flagged(j); },
+      [&](std::int32_t i, std::int32_t j) {
+        ma.flag(i);
+        mb.flag(j);
+      });
   out.a = ma.ids();
   out.b = mb.ids();
   return out;
