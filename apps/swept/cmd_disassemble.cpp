@@ -222,6 +222,8 @@ void run(const DisassembleCliOptions& o) {
                 << f.depth << " " << a.unit << ", extent " << f.extent << " " << a.unit << " (" << f.triangle_pairs
                 << " triangle pairs)\n";
     Table table({"#", "round", "part", "status", "how", "direction", "distance", "blockers", "ms"});
+    table.limit_width(2, 40);  // a group of many parts, and a long list of blockers, wrap
+    table.limit_width(7, 48);
     int k = 0;
     for (const SequenceStep& s : r.sequence) {
       std::string blockers;

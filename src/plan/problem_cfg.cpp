@@ -12,10 +12,52 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 namespace swept::problem_detail {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The keys of OMPL.app's [problem] section, as its benchmark's option reader declares them.
+constexpr std::string_view kCfgKeys[] = {
+    "name", "world", "robot", "objective", "objective.threshold", "control",
+    "start.x", "start.y", "start.z", "start.axis.x", "start.axis.y", "start.axis.z", "start.theta",
+    "goal.x", "goal.y", "goal.z", "goal.axis.x", "goal.axis.y", "goal.axis.z", "goal.theta",
+    "threshold", "solution_length",
+    "volume.min.x", "volume.min.y", "volume.min.z", "volume.max.x", "volume.max.y", "volume.max.z"};
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The declared key nearest to `key` within two edits (a typo), if any.
+std::optional<std::string_view> nearest_cfg_key(std::string_view key) {
+  std::optional<std::string_view> best;
+  std::size_t best_distance = 3;
+  for (std::string_view k : kCfgKeys)
+    if (const std::size_t d = edit_distance(key, k); d < best_distance) best = k, best_distance = d;
+  return best;
+}
+
+// The most turns an angle may make: past it, sin and cos of the angle lose their digits, and a
+// number that large in a problem file is a mistake, not a rotation.
+constexpr double kMaxTurns = 10.0;
+
+}  // namespace
 
 // OMPL.app's .cfg: an INI file with a [problem] section (robot, world, start.*, goal.*,
 // volume.*); angles in radians about an axis. OMPL.app reads it with boost::program_options,
@@ -75,6 +117,12 @@ Result<Problem> load_cfg(const fs::path& file) {
     }
     if (!std::isfinite(v)) {
       if (error.empty()) error = at(it->second.second) + key + ": must be a finite number, got '" + text + "'";
+      return false;
+    }
+    if (key.ends_with(".theta") && std::abs(v) > kMaxTurns * 2.0 * std::numbers::pi) {
+      if (error.empty())
+        error = at(it->second.second) + key + ": an angle of " + text + " rad is more than " + format_number(kMaxTurns) +
+                " turns: give it within one turn (radians, |theta| <= 2 pi)";
       return false;
     }
     out = v;
@@ -173,6 +221,24 @@ Result<Problem> load_cfg(const fs::path& file) {
       {"threshold", "OMPL's goal threshold, not used: swept's path ends exactly at the goal pose"},
   };
   std::vector<std::pair<int, std::string>> notes;
+  auto has_own_note = [&](const std::string& key) {
+    return std::any_of(std::begin(unused), std::end(unused), [&](const auto& u) { return key == u.first; });
+  };
+  // A key OMPL.app does not declare is, there, a parameter handed to its planners; here it means
+  // nothing, and is most often a typo that silently drops what was meant (start.thetaa).
+  for (const auto& [key, value] : kv) {
+    if (std::find(std::begin(kCfgKeys), std::end(kCfgKeys), key) != std::end(kCfgKeys) || has_own_note(key)) continue;
+    const auto near = nearest_cfg_key(key);
+    notes.emplace_back(value.second, at(value.second) + key + ": not a key of OMPL.app's [problem] section, ignored" +
+                                         (near ? "; did you mean " + std::string(*near) + "?" : ""));
+  }
+  const std::pair<const char*, const char*> control_notes[] = {
+      {"control", "OMPL.app's control-based systems are not planned: swept plans the free rigid body"},
+      {"solution_length", "OMPL's desired solution length, not used: swept shortens the path it finds by smoothing"},
+  };
+  for (const auto& [key, why] : control_notes)
+    if (auto it = kv.find(key); it != kv.end())
+      notes.emplace_back(it->second.second, at(it->second.second) + key + " = " + it->second.first + ": " + why);
   for (const auto& [key, why] : unused)
     if (auto it = kv.find(key); it != kv.end())
       notes.emplace_back(it->second.second, at(it->second.second) + key + " = " + it->second.first + ": " + why);

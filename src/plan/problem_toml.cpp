@@ -20,6 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Past ten turns an angle's sine and cosine lose their digits, and a number that large in a
+// problem file is a mistake, not a rotation; so is a quaternion whose length is far from 1.
+constexpr double kMaxAngleDeg = 3600.0;
+constexpr double kMinQuaternionLength = 1e-3;
+
 // Reads our TOML problem strictly: every table's keys are checked against the keys it may hold,
 // every value's type and range is checked, and the first problem becomes the error, naming the
 // file, the line and column, and the key ("p.toml:12:1: planner.clearence: unknown key ...").
@@ -159,6 +164,13 @@ struct TomlReader {
     if (q) {
       double c[4];
       if (!numbers(q, key + ".quaternion", c, 4, "[x, y, z, w]")) return false;
+      const double big = std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2]), std::abs(c[3])});
+      const double length = big > 0.0 ? big * Eigen::Vector4d(c[0] / big, c[1] / big, c[2] / big, c[3] / big).norm() : 0.0;
+      if (!(length >= kMinQuaternionLength && length <= 1.0 / kMinQuaternionLength))
+        return fail(*q, key + ".quaternion",
+                    "must have a length near 1 (it is normalized, and any length in [" + format(kMinQuaternionLength) +
+                        ", " + format(1.0 / kMinQuaternionLength) + "] is taken), got " + format(length) +
+                        ": [x, y, z, w] with w the real part, [0, 0, 0, 1] for no rotation");
       const auto unit = unit_quaternion(c[0], c[1], c[2], c[3]);
       if (!unit) return fail(*q, key + ".quaternion", "must not be zero");
       out.rotation = unit->toRotationMatrix();
@@ -168,6 +180,10 @@ struct TomlReader {
       Vec3 a = Vec3::Zero();
       double deg = 0.0;
       if (!vec3(axis, key + ".axis", a) || !number(angle, key + ".angle_deg", deg)) return false;
+      if (std::abs(deg) > kMaxAngleDeg)
+        return fail(*angle, key + ".angle_deg",
+                    "an angle of " + format(deg) + " degrees is more than " + format(kMaxAngleDeg / 360.0) +
+                        " turns: give it within one turn (|angle_deg| <= 360)");
       const auto unit = unit_axis(a);
       if (!unit) return fail(*axis, key + ".axis", "must not be zero");
       out.rotation = Eigen::AngleAxisd(deg * kDeg, *unit).toRotationMatrix();

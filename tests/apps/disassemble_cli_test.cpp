@@ -124,6 +124,34 @@ TEST(DisassembleCli, LockedAssemblyExitsTwoWithItsBlockers) {
   EXPECT_NE(table.out.find("not complete"), std::string::npos) << table.out;
 }
 
+// Long part names do not make long lines: the blockers column wraps after a comma, so no line
+// of the table is wider than its limited columns allow, and every name is still there.
+TEST(DisassembleCli, TableWrapsLongBlockerLists) {
+  const fs::path dir = scratch("riveted_long_names");
+  Assembly a = riveted_plates();
+  for (AssemblyPart& part : a.parts) part.name = "the_" + part.name + "_with_a_long_catalogue_name";
+  const fs::path toml = write_assembly(dir, a);
+  const CliRun r = run_cli("disassemble " + toml.string() + " --plan-time 0");
+  ASSERT_EQ(r.code, 2) << r.out;
+  std::istringstream in(r.out);
+  std::size_t rows = 0, widest = 0;
+  std::string table_text;
+  bool in_table = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("#  ")) in_table = true;
+    else if (in_table && (line.empty() || std::isalpha(static_cast<unsigned char>(line[0])))) in_table = false;
+    if (!in_table) continue;
+    ++rows;
+    widest = std::max(widest, line.size());
+    table_text += line + "\n";
+  }
+  // Each blocked part names two blockers of 40-odd characters each: one line would need ~90
+  // characters for them; with the column limited to 48 they take two lines.
+  EXPECT_GE(rows, 1u + 2u * 2u) << r.out;
+  EXPECT_LE(widest, 150u) << r.out;
+  for (const AssemblyPart& part : a.parts) EXPECT_NE(table_text.find(part.name), std::string::npos) << part.name << "\n" << r.out;
+}
+
 TEST(DisassembleCli, ViewPageDrawsTheBlockingGraphOfTheLockedParts) {
   const fs::path source = SWEPT_SOURCE_DIR;
   const fs::path dir = scratch("riveted_view");

@@ -319,28 +319,41 @@ TEST_F(ProblemFiles, WrongTypesAndRangesAreErrorsNamingTheKeyAndLine) {
   expect_error(load_problem(write("zero.toml", zero)), "body[0].pose.axis: must not be zero");
 }
 
-// Components too large for their squares to be finite still give the rotation they mean.
-TEST_F(ProblemFiles, HugeQuaternionComponentsAreNormalisedSafely) {
-  std::string huge = kGood;
-  huge.replace(huge.find("quaternion = [0, 0, 0, 1]"), 25, "quaternion = [0, 0, 1e300, 1e300]");
-  auto p = load_problem(write("huge.toml", huge));
+// A quaternion is normalized, but one whose length is far from 1 (1e300, 1e-200) is a mistake in
+// the file, not a rotation: it is refused, naming the key and the length. An angle of more than
+// ten turns likewise.
+TEST_F(ProblemFiles, QuaternionsFarFromUnitAndHugeAnglesAreRefused) {
+  for (const char* q : {"[0, 0, 1e300, 1e300]", "[1e-200, 0, 0, 0]", "[0, 0, 0, 1e-4]", "[0, 0, 2000, 0]"}) {
+    std::string text = kGood;
+    text.replace(text.find("quaternion = [0, 0, 0, 1]"), 25, std::string("quaternion = ") + q);
+    const auto p = load_problem(write("far.toml", text));
+    expect_error(p, "start.quaternion: must have a length near 1");
+  }
+  std::string longer = kGood;  // length 2: taken, and normalized
+  longer.replace(longer.find("quaternion = [0, 0, 0, 1]"), 25, "quaternion = [0, 0, 1.41421356237, 1.41421356237]");
+  auto p = load_problem(write("longer.toml", longer));
   ASSERT_TRUE(p) << p.error().message;
-  // 90° about z, not the identity the overflowed norm used to give.
-  EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->start.rotation), std::numbers::pi / 2, 1e-12);
-  EXPECT_NEAR(p->start.rotation(1, 0), 1.0, 1e-12);
-  std::string tiny = kGood;
-  tiny.replace(tiny.find("quaternion = [0, 0, 0, 1]"), 25, "quaternion = [1e-300, 0, 0, 0]");
-  p = load_problem(write("tiny.toml", tiny));
+  EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->start.rotation), std::numbers::pi / 2, 1e-10);
+  EXPECT_NEAR(p->start.rotation(1, 0), 1.0, 1e-10);
+  for (const char* angle : {"1e300", "-3601", "36000"}) {
+    std::string text = kGood;
+    text.replace(text.find("angle_deg = 0"), 13, std::string("angle_deg = ") + angle);
+    expect_error(load_problem(write("angle.toml", text)), "body[0].pose.angle_deg: an angle of");
+  }
+  std::string turns = kGood;  // within a turn, negative
+  turns.replace(turns.find("angle_deg = 0"), 13, "angle_deg = -270");
+  p = load_problem(write("turns.toml", turns));
   ASSERT_TRUE(p) << p.error().message;
-  EXPECT_NEAR(p->start.rotation(1, 1), -1.0, 1e-12);  // 180° about x
-  std::string axis = kGood;
+  EXPECT_NEAR(p->body[0].pose.rotation(1, 0), 1.0, 1e-12);  // -270° about z is +90°
+  std::string axis = kGood;  // an axis is only a direction, whatever its length
   axis.replace(axis.find("axis = [0, 0, 1], angle_deg = 0"), 31, "axis = [0, 1e308, 1e308], angle_deg = 180");
   p = load_problem(write("axis.toml", axis));
   ASSERT_TRUE(p) << p.error().message;
   EXPECT_NEAR(p->body[0].pose.rotation(0, 0), -1.0, 1e-12);
   EXPECT_NEAR(p->body[0].pose.rotation(1, 2), 1.0, 1e-12);
 
-  // The same in path files.
+  // A path file, written by a program, takes any non-zero quaternion, scaled by its largest
+  // component before normalizing.
   auto path = read_path(write("huge.path", "1 2 3 0 0 1e300 1e300\n"));
   ASSERT_TRUE(path) << path.error().message;
   EXPECT_NEAR(path->poses[0].rotation(1, 0), 1.0, 1e-12);
@@ -520,6 +533,48 @@ TEST_F(ProblemFiles, CfgDuplicatesZeroAxesAndNonFiniteNumbersAreErrors) {
   p = load_problem(write("huge.cfg", huge_axis));
   ASSERT_TRUE(p) << p.error().message;
   EXPECT_NEAR(rotation_angle(Mat3::Identity(), p->goal->rotation), 1.5, 1e-12);
+}
+
+// A key OMPL.app's [problem] section does not declare is a parameter for its planners there and
+// nothing here: named in a note with its line, with the declared key a typo most likely meant
+// (edit distance at most 2). OMPL.app's `name` is silent; `control` and `solution_length` are named.
+TEST_F(ProblemFiles, CfgUnknownKeysAreNamedWithTheKeyMeant) {
+  std::string text = kCfg;
+  text.replace(text.find("start.theta = 0"), 15, "start.thetaa = 0");
+  text += "name = peg in block\nlongest_valid_segment_fraction = 0.01\nvolume.mix.x = 3\n";
+  auto p = load_problem(write("typo.cfg", text));
+  ASSERT_TRUE(p) << p.error().message;
+  const int typo_line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text.find("start.thetaa")), '\n'));
+  const int last = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+  ASSERT_EQ(p->notes.size(), 3u) << ::testing::PrintToString(p->notes);
+  EXPECT_TRUE(p->notes[0].ends_with("typo.cfg:" + std::to_string(typo_line) +
+                                     ": start.thetaa: not a key of OMPL.app's [problem] section, ignored; did you mean start.theta?"))
+      << p->notes[0];
+  EXPECT_NE(p->notes[1].find("typo.cfg:" + std::to_string(last - 1) + ": longest_valid_segment_fraction: not a key"),
+            std::string::npos) << p->notes[1];
+  EXPECT_EQ(p->notes[1].find("did you mean"), std::string::npos) << p->notes[1];
+  EXPECT_NE(p->notes[2].find("volume.mix.x: not a key of OMPL.app's [problem] section, ignored; did you mean volume.min.x?"),
+            std::string::npos) << p->notes[2];
+  auto control = load_problem(write("control.cfg", std::string(kCfg) + "control = kinematic_car\nsolution_length = 10\n"));
+  ASSERT_TRUE(control) << control.error().message;
+  ASSERT_EQ(control->notes.size(), 2u);
+  EXPECT_NE(control->notes[0].find("control = kinematic_car: OMPL.app's control-based systems are not planned"), std::string::npos);
+  EXPECT_NE(control->notes[1].find("solution_length = 10: "), std::string::npos);
+  auto plain = load_problem(write("plain.cfg", kCfg));
+  ASSERT_TRUE(plain);
+  EXPECT_TRUE(plain->notes.empty());
+}
+
+// An angle past ten turns (|theta| > 20 pi rad) is refused, naming the key and its line.
+TEST_F(ProblemFiles, CfgAnglesPastTenTurnsAreRefused) {
+  for (const char* theta : {"1e300", "-63", "100"}) {
+    std::string text = kCfg;
+    text.replace(text.find("goal.theta = 1.5"), 16, std::string("goal.theta = ") + theta);
+    expect_error(load_problem(write("angle.cfg", text)), "angle.cfg:14: goal.theta: an angle of " + std::string(theta) + " rad is more than 10 turns");
+  }
+  std::string text = kCfg;
+  text.replace(text.find("goal.theta = 1.5"), 16, "goal.theta = -62.8");  // within ten turns
+  ASSERT_TRUE(load_problem(write("ok.cfg", text)));
 }
 
 // OMPL's PathGeometric::print() form, in which OMPL.app ships its solution paths

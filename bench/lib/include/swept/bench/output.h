@@ -16,31 +16,69 @@
 
 namespace swept::bench {
 
-/// An aligned text table: numbers right-aligned, text left-aligned.
+/// An aligned text table: numbers right-aligned, text left-aligned. A column given a width limit
+/// (`limit_width`) wraps a longer cell onto continuation lines, breaking after a list separator
+/// (", " or " + ") where there is one, so that one long list does not widen every row.
 class Table {
  public:
   explicit Table(std::vector<std::string> header) : rows_{std::move(header)} {}
   void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
+  void limit_width(std::size_t column, std::size_t width) {
+    if (limits_.size() <= column) limits_.resize(column + 1, 0);
+    limits_[column] = std::max<std::size_t>(width, 1);
+  }
   void print(std::ostream& os) const {
+    // Each row becomes one or more lines of cells.
+    std::vector<std::vector<std::vector<std::string>>> lines(rows_.size());
     std::vector<std::size_t> width;
-    for (const auto& r : rows_)
-      for (std::size_t i = 0; i < r.size(); ++i) {
-        if (width.size() <= i) width.push_back(0);
-        width[i] = std::max(width[i], r[i].size());
-      }
     for (std::size_t k = 0; k < rows_.size(); ++k) {
       const auto& r = rows_[k];
       for (std::size_t i = 0; i < r.size(); ++i) {
-        const bool numeric = k > 0 && !r[i].empty() && (std::isdigit(static_cast<unsigned char>(r[i][0])) || r[i][0] == '-');
-        const std::string pad(width[i] - r[i].size(), ' ');
-        os << (i ? "  " : "") << (numeric ? pad + r[i] : r[i] + (i + 1 < r.size() ? pad : ""));
+        const std::size_t limit = i < limits_.size() ? limits_[i] : 0;
+        const std::vector<std::string> parts = limit ? wrap(r[i], limit) : std::vector<std::string>{r[i]};
+        if (lines[k].size() < parts.size()) lines[k].resize(parts.size(), std::vector<std::string>(r.size()));
+        for (std::size_t j = 0; j < parts.size(); ++j) lines[k][j][i] = parts[j];
+        if (width.size() <= i) width.resize(i + 1, 0);
+        for (const std::string& part : parts) width[i] = std::max(width[i], part.size());
       }
-      os << "\n";
     }
+    for (std::size_t k = 0; k < rows_.size(); ++k)
+      for (const auto& cells : lines[k]) {
+        std::string out;
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+          const std::string& c = cells[i];
+          const bool numeric = k > 0 && !c.empty() && (std::isdigit(static_cast<unsigned char>(c[0])) || c[0] == '-');
+          const std::string pad(width[i] - c.size(), ' ');
+          out += (i ? "  " : "") + (numeric ? pad + c : c + pad);
+        }
+        out.erase(out.find_last_not_of(' ') + 1);
+        os << out << "\n";
+      }
   }
 
  private:
+  // `text` in lines of at most `limit` characters, broken only just after a separator; a piece
+  // with no separator inside stays whole, however long.
+  static std::vector<std::string> wrap(const std::string& text, std::size_t limit) {
+    std::vector<std::string> pieces{""};
+    for (std::size_t i = 0; i < text.size();) {
+      const std::size_t sep = text.compare(i, 2, ", ") == 0 ? 2 : text.compare(i, 3, " + ") == 0 ? 3 : 0;
+      pieces.back() += sep ? text.substr(i, sep) : text.substr(i, 1);
+      i += sep ? sep : 1;
+      if (sep && i < text.size()) pieces.emplace_back();
+    }
+    auto trimmed = [](std::string t) { return t.erase(t.find_last_not_of(' ') + 1); };
+    std::vector<std::string> out{""};
+    for (const std::string& piece : pieces) {
+      if (!out.back().empty() && trimmed(out.back() + piece).size() > limit) out.emplace_back();
+      out.back() += piece;
+    }
+    for (std::string& line : out) line = trimmed(line);
+    return out;
+  }
+
   std::vector<std::vector<std::string>> rows_;
+  std::vector<std::size_t> limits_;  // per column, 0: no limit
 };
 
 inline std::string fmt_fixed(double v, int digits) {
