@@ -4,7 +4,8 @@
 # assimp, OpenCASCADE and FreeCAD that the tests read),
 # the viewer's npm packages, and configures + builds the release preset; then installs the Python
 # module for /usr/bin/python3 (as root; otherwise prints the PYTHONPATH line to use).
-#   bash scripts/setup.sh            # packages + release build
+#   bash scripts/setup.sh            # packages + what a user runs: swept, swept-tools, the CAD module, Python
+#   bash scripts/setup.sh --all      # packages + every target: the tests and the benchmarks too
 #   SWEPT_SKIP_BUILD=1 bash scripts/setup.sh   # packages only
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,9 +43,22 @@ if [ -f viewer/package.json ] && [ ! -d viewer/node_modules ]; then
   (cd viewer && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
+# The targets a user runs (swept builds swept-tools; the CAD module is loaded by both). `--all`
+# builds the rest: the test programs and the benchmarks, which link GoogleTest, FCL and OMPL.
+user_targets=(swept_cli swept_cad)
+if [ "${1:-}" = "--all" ]; then
+  build_targets=(all)
+else
+  build_targets=("${user_targets[@]}")
+fi
+
 if [ -z "${SWEPT_SKIP_BUILD:-}" ]; then
   cmake --preset release >/dev/null
-  cmake --build --preset release -j"$(nproc)"
+  # The Python module, where it is configured (pybind11, Python's headers and NumPy found).
+  if [ "${build_targets[0]}" != all ] && ninja -C build/release -t query swept_python >/dev/null 2>&1; then
+    build_targets+=(swept_python)
+  fi
+  cmake --build --preset release -j"$(nproc)" --target "${build_targets[@]}"
   # The Python module (docs/python.md), built for Debian's /usr/bin/python3: as root it is
   # installed into /usr/local/lib/python3.X/dist-packages, on that interpreter's path.
   if compgen -G "build/release/python/swept/_swept*.so" >/dev/null; then
