@@ -3,6 +3,7 @@
 // (bench/lib: swept/bench/paper.h).
 #include "bench_group.h"
 #include "commands.h"
+#include "progress_line.h"
 
 #include "swept/bench/paper.h"
 #include "swept/bvh/bvh.h"
@@ -41,7 +42,21 @@ void add_bench_paper_command(CLI::App& app) {
   cmd->add_flag("--no-ompl", o->no_ompl, "do not run OMPL (bench_plan)");
   cmd->add_option("--bench-plan", o->bench_plan, "the bench_plan program (default: <build>/bench/bench_plan)");
   cmd->add_option("--ompl-time-limit", o->ompl_time_limit, "OMPL time limit per run, s (default 10 test, 60 paper)");
-  cmd->callback([o] { std::cout << bench::run_paper_benchmark(*o); });
+  auto quiet = std::make_shared<bool>(false);
+  cmd->add_flag("-q,--quiet", *quiet, "No progress line (there is none either when stderr is not a terminal)");
+  cmd->callback([o, quiet] {
+    ProgressLine line(!*quiet);
+    bench::PaperOptions run = *o;
+    if (line.on()) {
+      run.log = [&line](const std::string& text) { line.message(text); };
+      run.progress = [&line](std::size_t done, std::size_t total, const std::string& step) {
+        line.count("bench paper", done, total, "steps", step);
+      };
+    }
+    const std::string report = bench::run_paper_benchmark(run);
+    line.clear();
+    std::cout << report;
+  });
 }
 
 }  // namespace swept::cli

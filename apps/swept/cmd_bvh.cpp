@@ -2,6 +2,7 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "output.h"
+#include "progress_line.h"
 
 #include "swept/bvh/bvh.h"
 #include "swept/io/mesh_io.h"
@@ -30,6 +31,7 @@ struct BvhOptions {
   int leaf_size = 1;
   int threads = 0;
   bool json = false;
+  bool quiet = false;
   bool markdown = false;
 };
 
@@ -49,7 +51,11 @@ void run(const BvhOptions& o) {
   Table table({"file", "fitter", "split", "triangles", "nodes", "depth", "total SA", "total volume",
                "build ms", "bytes", "bytes/tri"});
   for (const std::string& file : o.files) {
-    auto model = import_mesh(file, o.import.import_options());
+    ProgressLine line(!o.quiet);
+    ImportOptions import = o.import.import_options();
+    import.progress = line.import_progress(std::filesystem::path(file).filename().string());
+    auto model = import_mesh(file, import);
+    line.clear();
     if (!model) throw std::runtime_error(model.error().message);
     for (const std::string& w : model->warnings) std::cerr << "swept: warning: " << w << "\n";
     const TriangleSoup soup = model->merged();
@@ -114,6 +120,7 @@ void add_bvh_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "Build threads (0: all cores; 1: serial build)")->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", o->json, "Print one JSON document instead of the table");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress line while a CAD file is read (none either when stderr is not a terminal)");
   cmd->add_flag("--markdown", o->markdown, "Print a Markdown table, with SA and volume relative to " + std::string(all_fitters().front().name) +
                     " (list it first)");
   cmd->callback([o] { run(*o); });

@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "part_source.h"
 #include "output.h"
+#include "progress_line.h"
 
 #include "swept/plan/check.h"
 #include "swept/plan/planner.h"
@@ -24,6 +25,7 @@ struct CheckCliOptions {
   double clearance = -1.0;
   std::string reference;
   bool json = false;
+  bool quiet = false;
 };
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -87,7 +89,10 @@ void run(const CheckCliOptions& o) {
   PathCheckOptions options;
   if (o.clearance >= 0) options.clearance = o.clearance;
   options.reference_point = reference_of(o, *problem, *scene);
+  ProgressLine line(!o.quiet);
+  if (line.on()) options.progress = [&line](std::size_t done, std::size_t total) { line.count("checking", done, total, "segments"); };
   const PathCheckResult r = check_path(*problem, *scene, *path, options);
+  line.clear();
 
   if (o.json) {
     nlohmann::json segments = nlohmann::json::array();
@@ -161,6 +166,7 @@ void add_check_command(CLI::App& app) {
                   "Point the motions interpolate about: origin | problem | x,y,z (body frame). Default: the\n"
                   "path file's own (JSON), the body frame's origin for .path (OMPL's interpolation)");
   cmd->add_flag("--json", o->json, "Print one JSON document");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress line (there is none either when stderr is not a terminal)");
   cmd->callback([o] { run(*o); });
 }
 

@@ -2,6 +2,7 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "output.h"
+#include "progress_line.h"
 
 #include "swept/assembly/disassemble.h"
 
@@ -32,6 +33,7 @@ struct DisassembleCliOptions {
   bool no_subassemblies = false;
   std::vector<std::string> targets;
   bool reassemble = false;
+  bool quiet = false;
   ImportCliOptions import;
 };
 
@@ -74,8 +76,11 @@ std::string step_name(const Assembly& a, const SequenceStep& s) {
 
 void run(const DisassembleCliOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
+  ProgressLine line(!o.quiet);
   AssemblyReadOptions read_options{o.import.import_options()};
+  read_options.import.progress = line.import_progress(fs::path(o.assembly).filename().string());
   auto assembly = read_assembly(o.assembly, read_options);
+  line.clear();
   if (!assembly) throw std::runtime_error(assembly.error().message);
   const double read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (const std::string& w : assembly->warnings) std::cerr << "swept: warning: " << w << "\n";
@@ -93,7 +98,15 @@ void run(const DisassembleCliOptions& o) {
     if (std::find(options.targets.begin(), options.targets.end(), *t) == options.targets.end()) options.targets.push_back(*t);
   }
   if (o.reassemble && o.targets.empty()) throw std::runtime_error("--reassemble goes with --target");
+  if (line.on()) {
+    options.progress = [&line](const DisassemblyProgress& p) {
+      const bool parts = std::string_view(p.phase) == "trees" || std::string_view(p.phase) == "removals" ||
+                         std::string_view(p.phase) == "blockings";
+      line.count(p.phase, p.done, p.total, parts ? "parts" : "pairs");
+    };
+  }
   const DisassemblyResult r = disassemble(*assembly, options);
+  line.clear();
   for (std::size_t t : r.targets)
     if (std::find(r.fixed.begin(), r.fixed.end(), t) != r.fixed.end())
       throw std::runtime_error(o.assembly + ": the target '" + assembly->parts[t].name +
@@ -338,6 +351,7 @@ void add_disassemble_command(CLI::App& app) {
                   "straight pulls; the others stay mounted. Prints why (what blocks each direction)");
   cmd->add_flag("--reassemble", o->reassemble,
                 "With --target: also the order to put it back, the paths played backwards (-o DIR/reassemble)");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress line (there is none either when stderr is not a terminal)");
   add_import_options(*cmd, o->import);
   cmd->callback([o] { run(*o); });
 }

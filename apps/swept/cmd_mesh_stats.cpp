@@ -2,6 +2,7 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "output.h"
+#include "progress_line.h"
 
 #include "swept/io/mesh_io.h"
 #include "swept/scenes/mesh_stats.h"
@@ -21,6 +22,7 @@ struct MeshStatsOptions {
   std::vector<std::string> files;
   ImportCliOptions import;
   bool json = false;
+  bool quiet = false;
   bool markdown = false;
 };
 
@@ -32,7 +34,11 @@ void run(const MeshStatsOptions& o) {
   md += "\n|---|---:|---:|---:|---:|---:|\n";
   nlohmann::json meshes = nlohmann::json::array();
   for (const std::string& file : o.files) {
-    auto model = import_mesh(file, o.import.import_options());
+    ProgressLine line(!o.quiet);
+    ImportOptions import = o.import.import_options();
+    import.progress = line.import_progress(std::filesystem::path(file).filename().string());
+    auto model = import_mesh(file, import);
+    line.clear();
     if (!model) throw std::runtime_error(model.error().message);
     for (const std::string& w : model->warnings) std::cerr << "swept: warning: " << w << "\n";
     const scenes::MeshStats s = scenes::mesh_stats(model->merged().triangles);
@@ -75,6 +81,7 @@ void add_mesh_stats_command(CLI::App& app) {
       ->required()->check(CLI::ExistingFile);
   add_import_options(*cmd, o->import);
   cmd->add_flag("--json", o->json, "Print one JSON document instead of the table");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress line while a CAD file is read (none either when stderr is not a terminal)");
   cmd->add_flag("--markdown", o->markdown, "Print a Markdown table instead of the aligned one");
   cmd->callback([o] { run(*o); });
 }

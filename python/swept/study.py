@@ -350,9 +350,11 @@ def run_job(job: Job) -> dict:
 
 # ---- running a study --------------------------------------------------------------------------------
 class _Progress:
-    """A progress bar on stderr: tqdm when installed, else one line redrawn."""
+    """A progress bar on stderr: tqdm when installed, else one line redrawn. Only on a terminal,
+    as the CLI's progress lines: a redirected stderr or a log never holds it."""
 
     def __init__(self, total: int, enabled: bool, label: str):
+        enabled = enabled and sys.stderr.isatty()
         self.total, self.done, self.enabled, self.label = total, 0, enabled, label
         self.bar = None
         self.t0 = time.monotonic()

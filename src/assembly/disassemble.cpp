@@ -44,7 +44,7 @@ double assembly_size(const std::vector<Body>& bodies) {
 class Sequencer {
  public:
   Sequencer(const Assembly& a, const DisassemblyOptions& o, double tolerance)
-      : a_(a), o_(o), settings_{o.clearance, tolerance} {}
+      : a_(a), o_(o), settings_{o.clearance, tolerance}, progress_(o.progress) {}
 
   DisassemblyResult run() {
     DisassemblyResult out;
@@ -55,11 +55,13 @@ class Sequencer {
     blocked_pulls_.assign(n, {});
     std::vector<std::size_t> remaining(n);
     std::iota(remaining.begin(), remaining.end(), std::size_t{0});
+    const std::size_t movable_total = static_cast<std::size_t>(std::count(is_fixed.begin(), is_fixed.end(), false));
     int round = 0;
     for (;;) {
       std::vector<std::size_t> movable;
       for (std::size_t i : remaining)
         if (!is_fixed[i]) movable.push_back(i);
+      progress_.set("removals", movable_total - movable.size(), movable_total);
       if (movable.empty()) {
         out.complete = true;
         break;
@@ -121,18 +123,20 @@ class Sequencer {
     while (!stack.empty()) {
       const std::size_t p = stack.back();
       stack.pop_back();
+      progress_.set("blockings", relevant.size(), relevant.size() + stack.size() + 1);
       relevant.push_back(p);
       for (const SequenceStep::Blocking& b : blocking(p).blocking)
         for (std::size_t q : b.blockers)
           if (!seen[q] && !is_fixed[q]) seen[q] = true, stack.push_back(q);
     }
+    progress_.set("blockings", relevant.size(), relevant.size());
     std::sort(relevant.begin(), relevant.end());
     {
       // Interferences where they can matter: the pairs with a part the targets may need off.
       const auto ti = Clock::now();
       std::vector<bool> among(n, false);
       for (std::size_t p : relevant) among[p] = true;
-      out.interferences = assembly_detail::interferences(bodies_, settings_.tolerance, among);
+      out.interferences = assembly_detail::interferences(bodies_, settings_.tolerance, among, &progress_);
       out.time_ms.interference = ms_since(ti);
     }
     std::vector<Removal> level{Removal{}};
@@ -291,12 +295,16 @@ class Sequencer {
     const std::size_t n = a_.parts.size();
     auto t0 = Clock::now();
     bodies_.resize(n);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { bodies_[i] = assembly_detail::make_body(a_, {i}, {}); });
+    progress_.set("trees", 0, n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+      bodies_[i] = assembly_detail::make_body(a_, {i}, {});
+      progress_.step("trees", n);
+    });
     size_ = assembly_size(bodies_);
     out.time_ms.build = ms_since(t0);
     if (contacts) {
       t0 = Clock::now();
-      out.interferences = assembly_detail::interferences(bodies_, settings_.tolerance, std::vector<bool>(n, true));
+      out.interferences = assembly_detail::interferences(bodies_, settings_.tolerance, std::vector<bool>(n, true), &progress_);
       out.time_ms.interference = ms_since(t0);
     }
     out.fixed = fixed_parts();
@@ -311,6 +319,8 @@ class Sequencer {
   const Assembly& a_;
   const DisassemblyOptions& o_;
   PullSettings settings_;
+  // find_contacts is const and reports too.
+  mutable assembly_detail::ProgressReporter progress_;
   std::vector<Body> bodies_;
   double size_ = 0.0;
   std::vector<std::vector<bool>> touching_;
@@ -380,9 +390,11 @@ class Sequencer {
       for (std::size_t j = 0; j < n; ++j)
         if (i != j && !is_fixed[i] && contact::box_gap(bodies_[j].box, bodies_[i].box) <= threshold)
           pairs.push_back({i, j});
+    progress_.set("contacts", 0, pairs.size());
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
       const auto [i, j] = pairs[k];
       out[i][j] = contact::touching_facets(bodies_[j], bodies_[i], threshold);
+      progress_.step("contacts", pairs.size());
     });
     return out;
   }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 
 namespace swept {
@@ -20,8 +21,31 @@ std::vector<Interference> find_interferences(const Assembly& assembly, double to
   return assembly_detail::interferences(bodies, tolerance, std::vector<bool>(n, true));
 }
 
+void assembly_detail::ProgressReporter::step(const char* phase, std::size_t total) {
+  if (!sink_) return;
+  const std::lock_guard lock(mutex_);
+  if (!phase_ || std::strcmp(phase, phase_) != 0) phase_ = phase, done_ = 0, last_s_ = -1.0;
+  ++done_;
+  report_locked(total);
+}
+
+void assembly_detail::ProgressReporter::set(const char* phase, std::size_t done, std::size_t total) {
+  if (!sink_) return;
+  const std::lock_guard lock(mutex_);
+  if (!phase_ || std::strcmp(phase, phase_) != 0) phase_ = phase, last_s_ = -1.0;
+  done_ = done;
+  report_locked(total);
+}
+
+void assembly_detail::ProgressReporter::report_locked(std::size_t total) {
+  const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  if (done_ < total && last_s_ >= 0.0 && now - last_s_ < 0.1) return;
+  last_s_ = now;
+  sink_(DisassemblyProgress{.phase = phase_, .done = done_, .total = total, .elapsed_s = now});
+}
+
 std::vector<Interference> assembly_detail::interferences(const std::vector<contact::Body>& bodies, double tolerance,
-                                                         const std::vector<bool>& among) {
+                                                         const std::vector<bool>& among, ProgressReporter* progress) {
   const std::size_t n = bodies.size();
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < n; ++i)
@@ -32,7 +56,13 @@ std::vector<Interference> assembly_detail::interferences(const std::vector<conta
       if ((a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all()) pairs.push_back({i, j});
     }
   std::vector<std::optional<Interference>> found(pairs.size());
+  if (progress) progress->set("interferences", 0, pairs.size());
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+    struct Done {
+      ProgressReporter* progress;
+      std::size_t total;
+      ~Done() { if (progress) progress->step("interferences", total); }
+    } done{progress, pairs.size()};
     const auto [i, j] = pairs[k];
     const contact::Body& a = bodies[i];
     const contact::Body& b = bodies[j];

@@ -12,6 +12,8 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -187,6 +189,25 @@ void silence_occt_output() {
   std::call_once(once, [] { Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream)); });
 }
 
+// OpenCASCADE's progress, handed to ImportOptions::progress: Show() is called under the
+// indicator's own mutex, never concurrently; a report is passed on per whole per cent.
+class ProgressToOptions : public Message_ProgressIndicator {
+ public:
+  ProgressToOptions(const ImportOptions& options, const char* phase) : options_(options), phase_(phase) {}
+  void Show(const Message_ProgressScope&, const Standard_Boolean force) override {
+    if (!options_.progress) return;
+    const int percent = static_cast<int>(100.0 * GetPosition());
+    if (!force && percent == last_percent_) return;
+    last_percent_ = percent;
+    options_.progress(ImportProgress{.phase = phase_, .fraction = GetPosition()});
+  }
+
+ private:
+  const ImportOptions& options_;
+  const char* phase_;
+  int last_percent_ = -1;
+};
+
 template <class Reader>
 Result<bool> read_xcaf(const ReadContext& ctx, const char* format, Handle(TDocStd_Document)& doc,
                        std::vector<Instance>& instances) {
@@ -214,7 +235,8 @@ Result<bool> read_xcaf(const ReadContext& ctx, const char* format, Handle(TDocSt
     return file_error(ctx.display, std::string(format) + " " + status_text(status) + details +
                                        check_messages(base_reader(reader)));
   }
-  if (!reader.Transfer(doc))
+  Handle(ProgressToOptions) shapes = new ProgressToOptions(*ctx.options, "shapes");
+  if (!reader.Transfer(doc, shapes->Start()))
     return file_error(ctx.display, std::string(format) + " transfer to shapes failed" + check_messages(base_reader(reader)));
   Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
   TDF_LabelSequence roots;
@@ -396,7 +418,8 @@ Result<bool> read_cad_occt(const ReadContext& ctx, std::vector<TriangleSoup>& pa
     params.InParallel = ctx.single_threaded ? Standard_False : Standard_True;
     // Explicit, so that the CSF_MeshAlgo environment variable cannot change the result.
     params.MeshAlgo = IMeshTools_MeshAlgoType_Watson;
-    BRepMesh_IncrementalMesh mesher(prototypes, params);
+    Handle(ProgressToOptions) meshing = new ProgressToOptions(opt, "meshing");
+    BRepMesh_IncrementalMesh mesher(prototypes, params, meshing->Start());
     if (!mesher.IsDone()) return file_error(ctx.display, "BRepMesh failed to tessellate the shapes");
 
     // A face BRepMesh left without triangles: of no area (a degenerate face the file holds, as

@@ -9,6 +9,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <mutex>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -83,7 +85,20 @@ PathCheckResult check_path(const Problem& problem, const PlanScene& scene, const
     if (at_waypoint[i] <= margin || at_waypoint[i + 1] <= margin) contact.emplace(scene, margin, problem.contact_tolerance);
 
   out.segments.resize(segments);
+  std::mutex progress_mutex;
+  std::size_t segments_done = 0;
   tbb::parallel_for(std::size_t{0}, segments, [&](std::size_t i) {
+    struct Report {  // on every way out of the segment's check
+      const PathCheckOptions& options;
+      std::mutex& mutex;
+      std::size_t& done;
+      std::size_t total;
+      ~Report() {
+        if (!options.progress) return;
+        const std::lock_guard lock(mutex);
+        options.progress(++done, total);
+      }
+    } report{options, progress_mutex, segments_done, segments};
     SegmentCheck& sc = out.segments[i];
     auto pose_at = [&](double t) { return pose_on(i, t); };
     // Where the certificate stopped: the parameter and the distance found there (≤ the

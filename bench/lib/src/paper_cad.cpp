@@ -3,7 +3,6 @@
 
 #include "swept/io/mesh_io.h"
 
-#include <iostream>
 #include <stdexcept>
 
 namespace swept::bench {
@@ -29,11 +28,18 @@ constexpr CadInput kCad[] = {
 
 }  // namespace
 
-void run_cad(const PaperOptions& o, bool paper, Results& res) {
+std::size_t cad_steps(bool paper) {
+  std::size_t n = 0;
+  for (const CadInput& c : kCad) n += (!c.paper_only || paper) ? 1 : 0;
+  return n;
+}
+
+void run_cad(const PaperOptions& o, bool paper, Results& res, PaperSteps& steps) {
   const fs::path data(o.data_dir);
   if (!fs::is_directory(data)) {
     res.notes.push_back("real CAD skipped: the data directory " + data.string() + " is absent");
-    std::cerr << "bench paper: " << res.notes.back() << "\n";
+    log_line(o, std::string("bench paper: ") + res.notes.back());
+    for (std::size_t i = cad_steps(paper); i > 0; --i) steps.step("real CAD skipped");
     return;
   }
   for (const CadInput& c : kCad) {
@@ -41,7 +47,8 @@ void run_cad(const PaperOptions& o, bool paper, Results& res) {
     const fs::path file = data / c.path;
     if (!fs::exists(file)) {
       res.notes.push_back("real CAD " + file.string() + " skipped: absent");
-      std::cerr << "bench paper: " << res.notes.back() << "\n";
+      log_line(o, std::string("bench paper: ") + res.notes.back());
+      steps.step(fs::path(c.path).filename().string());
       continue;
     }
     ImportOptions io;
@@ -53,8 +60,9 @@ void run_cad(const PaperOptions& o, bool paper, Results& res) {
     if (tris.empty()) throw std::runtime_error(file.string() + ": no triangles");
     std::string name = fs::path(c.path).filename().string();
     if (c.deflection > 0) name += " @" + fmt_g(c.deflection) + " mm";
-    std::cerr << "bench paper: " << name << ": " << tris.size() << " triangles\n";
+    log_line(o, std::string("bench paper: ") + name + ": " + std::to_string(tris.size()) + " triangles");
     res.meshes.push_back(measure_mesh(name, c.path, tris, o.runs));
+    steps.step(name);
   }
 }
 

@@ -9,7 +9,6 @@
 #include "swept/plan/problem.h"
 #include "swept/query/query.h"
 
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 
@@ -85,8 +84,10 @@ MeshRow measure_mesh(const std::string& name, const std::string& source, const s
   return row;
 }
 
+std::size_t scene_steps() { return split_rules().size() * fitters().size(); }
+
 void run_scene(const PaperOptions& o, const scenes::SceneInfo& info, const fs::path& problem_file, Results& res,
-               int poses_per_set) {
+               int poses_per_set, PaperSteps& steps) {
   SceneRun& sr = res.scenes.back();
   auto problem = load_problem(problem_file);
   if (!problem) throw std::runtime_error(problem.error().message);
@@ -97,8 +98,7 @@ void run_scene(const PaperOptions& o, const scenes::SceneInfo& info, const fs::p
   sr.load_ms = ms_since(t0);
   sr.body_triangles = scene.body.triangles.size();
   sr.obstacle_triangles = scene.obstacles.triangles.size();
-  std::cerr << "bench paper: " << info.name << ": body " << sr.body_triangles << ", obstacles "
-            << sr.obstacle_triangles << " triangles\n";
+  log_line(o, std::string("bench paper: ") + info.name + ": body " + std::to_string(sr.body_triangles) + ", obstacles " + std::to_string(sr.obstacle_triangles) + " triangles");
 
   // The poses are drawn with the problem's trees (the fitter does not change what collides).
   const std::vector<PoseSet> sets = make_pose_sets(
@@ -162,10 +162,11 @@ void run_scene(const PaperOptions& o, const scenes::SceneInfo& info, const fs::p
       }
       pr.wall_ms = spread_of(times);
       pr.cpu_ms = spread_of(cpu_times);
-      std::cerr << "  " << cfg << ": build body " << fmt_fixed(body.trees.back().build_ms.median, 1)
-                << " ms, obstacles " << fmt_fixed(obstacles.trees.back().build_ms.median, 1) << " ms; plan CPU "
-                << fmt_spread(pr.cpu_ms, 1) << " ms, wall " << fmt_spread(pr.wall_ms, 1) << " ms, " << pr.statuses.back() << ", " << pr.distance_queries
-                << " distance queries\n";
+      log_line(o, "  " + cfg + ": build body " + fmt_fixed(body.trees.back().build_ms.median, 1) + " ms, obstacles " +
+                      fmt_fixed(obstacles.trees.back().build_ms.median, 1) + " ms; plan CPU " + fmt_spread(pr.cpu_ms, 1) +
+                      " ms, wall " + fmt_spread(pr.wall_ms, 1) + " ms, " + pr.statuses.back() + ", " +
+                      std::to_string(pr.distance_queries) + " distance queries");
+      steps.step(info.name + " " + cfg);
       res.plans.push_back(std::move(pr));
 
       volatile double sink = 0.0;

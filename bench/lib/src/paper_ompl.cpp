@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
-#include <iostream>
 #include <limits>
 
 namespace swept::bench {
@@ -45,7 +44,7 @@ void run_ompl(const PaperOptions& o, bool paper, const fs::path& out, Results& r
     res.ompl_status = "not run: the bench_plan program (" + (prog.empty() ? std::string("?") : prog.string()) +
                       ") is not built; build it with `cmake --build <build> --target bench_plan` or name it with "
                       "--bench-plan";
-    std::cerr << "bench paper: OMPL " << res.ompl_status << "\n";
+    log_line(o, std::string("bench paper: OMPL ") + res.ompl_status);
     return;
   }
   // The scenes of this benchmark (bench_plan generates them itself, at test scale).
@@ -63,7 +62,7 @@ void run_ompl(const PaperOptions& o, bool paper, const fs::path& out, Results& r
                           " --time-limit " + fmt_g(res.ompl_time_limit, 6) + " --threads " + std::to_string(o.threads) +
                           " --json " + shell_quote(json.string()) + " > " + shell_quote((out / "bench_plan.txt").string()) +
                           " 2> " + shell_quote((out / "bench_plan.log").string());
-  std::cerr << "bench paper: OMPL RRTConnect + FCL via " << prog.string() << " (test-scale scenes)\n";
+  log_line(o, std::string("bench paper: OMPL RRTConnect + FCL via ") + prog.string() + " (test-scale scenes)");
   const int rc = std::system(cmd.c_str());
   std::ifstream in(json);
   if (rc != 0 || !in) {

@@ -46,12 +46,16 @@ std::string write_outputs(const Results& res, const PaperOptions& o, const fs::p
   if (!final_write) md = "> **Partial results**: the run was still going when this was written.\n\n" + md;
   write_output((out / "report.md").string(), md);
   if (final_write)
-    std::cerr << "bench paper: wrote " << (out / "results.json").string() << ", " << (out / "report.md").string()
-              << " and " << plots.size() << " plots in " << (out / "img").string() << "\n";
+    log_line(o, std::string("bench paper: wrote ") + (out / "results.json").string() + ", " + (out / "report.md").string() + " and " + std::to_string(plots.size()) + " plots in " + (out / "img").string());
   return md;
 }
 
 }  // namespace
+
+void log_line(const PaperOptions& o, const std::string& line) {
+  if (o.log) o.log(line);
+  else std::cerr << line << "\n";
+}
 
 std::string run_paper_benchmark(const PaperOptions& o) {
   scenes::Scale scale;
@@ -70,6 +74,12 @@ std::string run_paper_benchmark(const PaperOptions& o) {
   fs::create_directories(out, ec);
   if (ec || !fs::is_directory(out)) throw std::runtime_error(out.string() + ": cannot create the output directory");
 
+  PaperSteps steps{o};
+  for (const scenes::SceneInfo& info : scenes::catalog())
+    if (!o.no_scenes && (o.only.empty() || std::find(o.only.begin(), o.only.end(), info.name) != o.only.end()))
+      steps.total += scene_steps();
+  steps.total += (o.no_cad ? 0 : cad_steps(paper)) + (o.no_ompl ? 0 : 1);
+
   Results res;
   for (const scenes::SceneInfo& info : scenes::catalog()) {
     if (o.no_scenes) break;
@@ -85,27 +95,29 @@ std::string run_paper_benchmark(const PaperOptions& o) {
       res.notes.push_back(info.name + ": scene files taken from " + problem.parent_path().string() +
                           " (generated earlier by `swept scene " + info.name + " --scale " + o.scale + "`)");
     } else {
-      std::cerr << "bench paper: generating " << info.name << " at scale " << o.scale << "\n";
+      log_line(o, std::string("bench paper: generating ") + info.name + " at scale " + o.scale);
       const auto t0 = Clock::now();
       auto report = scenes::generate_scene({.name = info.name, .scale = scale, .output_dir = out / "scenes" / info.name});
       sr.generate_s = ms_since(t0) / 1e3;
       if (!report) {
         sr.error = report.error().message;
         res.notes.push_back(info.name + " not run: " + sr.error);
-        std::cerr << "bench paper: " << res.notes.back() << "\n";
+        log_line(o, std::string("bench paper: ") + res.notes.back());
+        for (std::size_t i = scene_steps(); i > 0; --i) steps.step(info.name + " not run");
         continue;
       }
       problem = report->problem_file;
     }
     sr.problem_file = problem.string();
-    run_scene(o, info, problem, res, poses);
+    run_scene(o, info, problem, res, poses, steps);
     write_outputs(res, o, out, false);
   }
   if (!o.no_cad) {
-    run_cad(o, paper, res);
+    run_cad(o, paper, res, steps);
     write_outputs(res, o, out, false);
   }
   run_ompl(o, paper, out, res);
+  if (!o.no_ompl) steps.step("OMPL");
   const bool ompl_measured = !res.ompl.empty();
   const std::string ompl_status = res.ompl_status;
   for (const std::string& d : o.merge) merge_results(d, o, res);

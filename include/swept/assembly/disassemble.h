@@ -16,6 +16,7 @@
 #include "swept/plan/problem.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,15 @@ struct Interference {
   double depth = 0.0;                   ///< the deepest intersecting triangle pair's pair_overlap
   double extent = 0.0;                  ///< diagonal of the box of the intersecting triangles' crossing points
   std::size_t triangle_pairs = 0;       ///< intersecting triangle pairs deeper than the tolerance
+};
+
+/// Reported while disassembling (DisassemblyOptions::progress), for a progress line.
+struct DisassemblyProgress {
+  /// "trees" (one per part), "interferences" (pairs whose boxes meet), "contacts" (pairs),
+  /// "removals" (parts out of the movable ones), "blockings" (--target: the parts looked at)
+  const char* phase = "";
+  std::size_t done = 0, total = 0;
+  double elapsed_s = 0.0;  ///< since disassemble() began
 };
 
 struct DisassemblyOptions {
@@ -54,6 +64,9 @@ struct DisassemblyOptions {
   /// The selective search's limit on the sets of removals it keeps; past it the answer is a
   /// greedy one, not proved the fewest (DisassemblyResult::fewest false).
   std::size_t target_states = 200000;
+  /// Called as the work advances (about ten times a second at most, and at the end of each
+  /// phase), one call at a time, from whichever thread did the work. Not called when empty.
+  std::function<void(const DisassemblyProgress&)> progress;
 };
 
 /// How a part (or group) left.

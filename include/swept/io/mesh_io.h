@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,12 @@ namespace swept {
 bool unit_scale(std::string_view unit, double& metres_per_unit);
 
 /// How to import: output unit, the file's unit where it has none, tessellation of CAD.
+/// Reported while a CAD file is read (ImportOptions::progress).
+struct ImportProgress {
+  const char* phase = "";  ///< "shapes" (the file's entities to shapes), "meshing" (BRepMesh over the faces)
+  double fraction = 0.0;   ///< of the phase, 0 to 1
+};
+
 struct ImportOptions {
   /// Unit of the output coordinates.
   std::string unit = "mm";
@@ -57,6 +64,11 @@ struct ImportOptions {
   /// 0.1 mm). 0: the environment's SWEPT_READER_MEMORY (gigabytes) if set, else three quarters of
   /// the physical memory. Not applied in AddressSanitizer builds.
   std::size_t reader_memory = 0;
+  /// Called as a STEP, IGES or BREP read advances (OpenCASCADE's progress, at most about a
+  /// hundred times a phase), one call at a time. With `isolate_readers` it runs in the reader's
+  /// child process: it may draw on the terminal, but what it changes stays in the child. Not
+  /// called for mesh formats, or when empty.
+  std::function<void(const ImportProgress&)> progress;
 };
 
 /// What an import produced.

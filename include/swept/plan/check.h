@@ -4,6 +4,7 @@
 #include "swept/plan/planner.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -17,6 +18,9 @@ struct PathCheckOptions {
   /// straight line, the rotation a slerp about it); default: the scene's reference point. OMPL
   /// interpolates SE(3) states about the body frame's origin: pass (0, 0, 0) for its paths.
   std::optional<Vec3> reference_point;
+  /// Called with (segments checked, segments) as the segments finish, one call at a time, from
+  /// whichever thread checked the segment; for a progress line. Not called when empty.
+  std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 /// One segment (waypoint i → i + 1).

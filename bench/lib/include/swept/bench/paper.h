@@ -22,6 +22,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,15 @@ struct PaperOptions {
   bool no_ompl = false;
   std::string bench_plan;    ///< path of the bench_plan program; empty: beside this build
   double ompl_time_limit = 0.0;  ///< s; 0: 10 at test scale, 60 at paper scale
+  /// Where the run's log lines go (what it generates, measures and writes); empty: stderr.
+  std::function<void(const std::string& line)> log;
+  /// Called after each step: a scene's fitter and split rule measured, a CAD mesh measured, the
+  /// OMPL run; (steps done, steps in all, the step just done). Not called when empty.
+  std::function<void(std::size_t done, std::size_t total, const std::string& step)> progress;
 };
+
+/// One line of the run's log (PaperOptions::log, else stderr).
+void log_line(const PaperOptions& o, const std::string& line);
 
 /// Runs the benchmark: validates the options (std::runtime_error on bad ones), measures, writes
 /// the outputs into `o.out` after every scene (an interrupted run leaves what it measured) and
@@ -92,16 +101,30 @@ const QueryRow* find_query(const Results& r, const std::string& scene, const std
 
 // ---- the phases --------------------------------------------------------------------------------
 
+/// The run's steps, counted for PaperOptions::progress.
+struct PaperSteps {
+  const PaperOptions& options;
+  std::size_t done = 0, total = 0;
+  void step(const std::string& what) {
+    ++done;
+    if (options.progress) options.progress(done, total, what);
+  }
+};
+
+/// The steps of run_scene (one per split rule and fitter) and of run_cad (one per mesh measured).
+std::size_t scene_steps();
+std::size_t cad_steps(bool paper);
+
 /// Measures one scene (problem file already generated): every tree, plan and query row, FCL's
 /// builds and queries. Appends to `res`; `res.scenes.back()` is this scene's SceneRun.
 void run_scene(const PaperOptions& o, const scenes::SceneInfo& info, const std::filesystem::path& problem_file,
-               Results& res, int poses_per_set);
+               Results& res, int poses_per_set, PaperSteps& steps);
 
 /// Tables II and IV for a mesh that is not planned with (the real CAD).
 MeshRow measure_mesh(const std::string& name, const std::string& source, const std::vector<Triangle>& tris, int runs);
 
 /// The real CAD meshes of the data directory (the paper-only ones at paper scale).
-void run_cad(const PaperOptions& o, bool paper, Results& res);
+void run_cad(const PaperOptions& o, bool paper, Results& res, PaperSteps& steps);
 
 /// OMPL RRTConnect + FCL on the same scenes, through the bench_plan program; sets
 /// res.ompl_status in every case.
