@@ -6,8 +6,10 @@
 // upper bearing, the lower bearing everything. Every pull is re-checked by the independent
 // sampled check against the parts still in place.
 #include "assembly/assembly_support.h"
+#include "support/test_support.h"
 #include "swept/scenes/gearbox.h"
 
+#include <limits>
 #include <set>
 
 namespace swept {
@@ -49,8 +51,7 @@ DisassemblyResult take_out(const std::vector<std::string>& targets) {
 
 // Every pull certified independently against what is still in place when it runs; the parts
 // not in the answer never move.
-void expect_pulls_hold(const DisassemblyResult& r) {
-  const Assembly& a = gearbox();
+void expect_pulls_hold(const DisassemblyResult& r, const Assembly& a = gearbox()) {
   std::vector<bool> gone(a.parts.size(), false);
   for (const SequenceStep& s : r.sequence) {
     ASSERT_TRUE(s.removed);
@@ -152,6 +153,107 @@ TEST(Target, AShutInTargetStaysWithItsBlockers) {
   for (const auto& b : r.why[0].blocking)
     for (std::size_t q : b.blockers) blockers.insert(a.parts[q].name);
   EXPECT_TRUE(blockers.count("bearing-upper") || blockers.count("cover")) << "the way up is named";
+}
+
+// The shared as1 STEP (AP214's test assembly): a plate (the base), two L-brackets each held down
+// by three bolts through bracket and plate with a nut under the plate, and a rod through both
+// brackets with a nut on each end. Without threads in the geometry a shaft slides out of its nut:
+// a bolt leaves upwards and the rod along its axis with the nuts in place. So, from the parts'
+// boxes alone (not from swept's blocking): a bracket needs off the bolts whose shafts go through
+// it (their boxes cross the bracket's) and one of what holds it on the rod's axis (the rod, or
+// the nut at that end): five removals with itself; a bolt under the rod (its box, swept upwards,
+// crosses the rod's) needs the rod off; the other bolts and the rod need nothing.
+std::optional<Assembly> as1(std::string& why) {
+  const auto data = shared_data();
+  if (!data) return why = "../shared/data is absent", std::nullopt;
+  const auto file = *data / "as1" / "as1-oc-214.stp";
+  if (!std::filesystem::exists(file)) return why = file.string() + " not found", std::nullopt;
+  auto a = read_assembly(file);
+  if (!a) return why = a.error().message, std::nullopt;
+  return std::move(*a);
+}
+
+Aabb box_of(const AssemblyPart& p) {
+  Aabb b;
+  for (const Triangle& t : p.mesh.triangles)
+    for (int k = 0; k < 3; ++k) b.extend(t[k]);
+  return b;
+}
+
+bool boxes_cross(const Aabb& a, const Aabb& b) {
+  return (a.min.array() < b.max.array()).all() && (b.min.array() < a.max.array()).all();
+}
+
+std::vector<std::string> named(const Assembly& a, const std::string& prefix) {
+  std::vector<std::string> out;
+  for (const AssemblyPart& p : a.parts)
+    if (p.name == prefix || p.name.starts_with(prefix + "#")) out.push_back(p.name);
+  return out;
+}
+
+DisassemblyResult take_out_of(const Assembly& a, const std::string& target) {
+  DisassemblyOptions o{.clearance = 0.01, .tolerance = 0.2, .jobs = 2, .plan_time_limit = 0};
+  o.targets = {index_of(a, target)};
+  return disassemble(a, o);
+}
+
+TEST(Target, As1BracketsNeedTheirBoltsAndTheRodsWayOff) {
+  std::string why;
+  const auto a = as1(why);
+  if (!a) GTEST_SKIP() << why;
+  ASSERT_EQ(named(*a, "l-bracket").size(), 2u);
+  ASSERT_EQ(named(*a, "bolt").size(), 6u);
+  ASSERT_EQ(named(*a, "nut").size(), 8u);
+  const Aabb rod = box_of(a->parts[index_of(*a, "rod")]);
+  for (const std::string& bracket : named(*a, "l-bracket")) {
+    const Aabb b = box_of(a->parts[index_of(*a, bracket)]);
+    std::set<std::string> bolts;
+    for (const std::string& bolt : named(*a, "bolt"))
+      if (boxes_cross(b, box_of(a->parts[index_of(*a, bolt)]))) bolts.insert(bolt);
+    ASSERT_EQ(bolts.size(), 3u) << bracket;
+    ASSERT_TRUE(boxes_cross(b, rod)) << "the rod goes through " << bracket;
+    const DisassemblyResult r = take_out_of(*a, bracket);
+    ASSERT_TRUE(r.complete) << bracket;
+    EXPECT_TRUE(r.fewest);
+    ASSERT_EQ(r.sequence.size(), 5u) << bracket;
+    std::set<std::string> removed = removed_names(*a, r);
+    for (const std::string& bolt : bolts) EXPECT_EQ(removed.count(bolt), 1u) << bolt << " for " << bracket;
+    EXPECT_EQ(a->parts[r.sequence.back().parts[0]].name, bracket);  // the target last
+    // The fifth: the rod, or a nut on the rod's axis (its box crosses the rod's).
+    for (const std::string& bolt : bolts) removed.erase(bolt);
+    removed.erase(bracket);
+    ASSERT_EQ(removed.size(), 1u);
+    const std::string fifth = *removed.begin();
+    EXPECT_TRUE(fifth == "rod" || (fifth.starts_with("nut") && boxes_cross(rod, box_of(a->parts[index_of(*a, fifth)]))))
+        << fifth;
+    expect_pulls_hold(r, *a);
+  }
+}
+
+TEST(Target, As1BoltsAndTheRodNeedOnlyWhatIsAboveThem) {
+  std::string why;
+  const auto a = as1(why);
+  if (!a) GTEST_SKIP() << why;
+  const Aabb rod = box_of(a->parts[index_of(*a, "rod")]);
+  const DisassemblyResult r = take_out_of(*a, "rod");
+  ASSERT_TRUE(r.complete);
+  EXPECT_EQ(removed_names(*a, r), std::set<std::string>{"rod"});
+  expect_pulls_hold(r, *a);
+  std::size_t under = 0;
+  for (const std::string& bolt : named(*a, "bolt")) {
+    Aabb above = box_of(a->parts[index_of(*a, bolt)]);  // what the bolt sweeps going up
+    above.max.z() = std::numeric_limits<double>::max();
+    const bool under_rod = boxes_cross(rod, above);
+    under += under_rod ? 1 : 0;
+    const DisassemblyResult b = take_out_of(*a, bolt);
+    ASSERT_TRUE(b.complete) << bolt;
+    EXPECT_TRUE(b.fewest);
+    const std::set<std::string> expected = under_rod ? std::set<std::string>{"rod", bolt} : std::set<std::string>{bolt};
+    EXPECT_EQ(removed_names(*a, b), expected) << bolt;
+    EXPECT_TRUE(b.sequence.back().direction.isApprox(Vec3::UnitZ())) << bolt << ": a bolt leaves upwards";
+    expect_pulls_hold(b, *a);
+  }
+  EXPECT_GE(under, 1u);
 }
 
 }  // namespace
