@@ -7,12 +7,15 @@
 #include "swept/contact/mate_rule.h"
 #include "swept/geometry/distance.h"
 #include "swept/scenes/box_problems.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <numbers>
 #include <string>
@@ -261,6 +264,18 @@ inline int pull_violations(const Assembly& a, const std::vector<std::size_t>& mo
       }
   }
   return bad;
+}
+
+/// The shared as1 STEP read as an assembly, or nothing with why not (no shared data, not found,
+/// or "does not read: ..." when it is there but fails).
+inline std::optional<Assembly> read_as1(std::string& why) {
+  const auto data = shared_data();
+  if (!data) return why = "../shared/data is absent: as1 not taken apart", std::nullopt;
+  const auto file = *data / "as1" / "as1-oc-214.stp";
+  if (!std::filesystem::exists(file)) return why = file.string() + " not found", std::nullopt;
+  auto a = read_assembly(file);
+  if (!a) return why = "as1 does not read: " + a.error().message, std::nullopt;
+  return std::move(*a);
 }
 
 }  // namespace swept::test

@@ -242,17 +242,6 @@ TEST(Sequence, PlannerAttemptsEndAtTheirQueryBudgetAtAnyJobCount) {
   }
 }
 
-// The shared as1 STEP read as an assembly, or nothing with why not.
-std::optional<Assembly> read_as1(std::string& why) {
-  const auto data = shared_data();
-  if (!data) return why = "../shared/data is absent: as1 not taken apart", std::nullopt;
-  const auto file = *data / "as1" / "as1-oc-214.stp";
-  if (!std::filesystem::exists(file)) return why = file.string() + " not found", std::nullopt;
-  auto a = read_assembly(file);
-  if (!a) return why = "as1 does not read: " + a.error().message, std::nullopt;
-  return std::move(*a);
-}
-
 TEST(Sequence, As1ComesApartCompletely) {
   std::string why;
   const auto a = read_as1(why);

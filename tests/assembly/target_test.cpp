@@ -163,16 +163,6 @@ TEST(Target, AShutInTargetStaysWithItsBlockers) {
 // it (their boxes cross the bracket's) and one of what holds it on the rod's axis (the rod, or
 // the nut at that end): five removals with itself; a bolt under the rod (its box, swept upwards,
 // crosses the rod's) needs the rod off; the other bolts and the rod need nothing.
-std::optional<Assembly> as1(std::string& why) {
-  const auto data = shared_data();
-  if (!data) return why = "../shared/data is absent", std::nullopt;
-  const auto file = *data / "as1" / "as1-oc-214.stp";
-  if (!std::filesystem::exists(file)) return why = file.string() + " not found", std::nullopt;
-  auto a = read_assembly(file);
-  if (!a) return why = a.error().message, std::nullopt;
-  return std::move(*a);
-}
-
 Aabb box_of(const AssemblyPart& p) {
   Aabb b;
   for (const Triangle& t : p.mesh.triangles)
@@ -199,7 +189,7 @@ DisassemblyResult take_out_of(const Assembly& a, const std::string& target) {
 
 TEST(Target, As1BracketsNeedTheirBoltsAndTheRodsWayOff) {
   std::string why;
-  const auto a = as1(why);
+  const auto a = read_as1(why);
   if (!a) GTEST_SKIP() << why;
   ASSERT_EQ(named(*a, "l-bracket").size(), 2u);
   ASSERT_EQ(named(*a, "bolt").size(), 6u);
@@ -232,7 +222,7 @@ TEST(Target, As1BracketsNeedTheirBoltsAndTheRodsWayOff) {
 
 TEST(Target, As1BoltsAndTheRodNeedOnlyWhatIsAboveThem) {
   std::string why;
-  const auto a = as1(why);
+  const auto a = read_as1(why);
   if (!a) GTEST_SKIP() << why;
   const Aabb rod = box_of(a->parts[index_of(*a, "rod")]);
   const DisassemblyResult r = take_out_of(*a, "rod");
