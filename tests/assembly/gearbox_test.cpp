@@ -38,7 +38,9 @@ TEST(Gearbox, ComesApartInItsKnownOrder) {
   EXPECT_LT(when["shaft"], when["bearing-lower"]);
   // Every removal is a straight pull along the shaft's axis, up.
   for (const SequenceStep& s : r.sequence) EXPECT_TRUE(s.direction.isApprox(Vec3::UnitZ())) << s.direction.transpose();
-  // The independent check, pull by pull, against what was still in place.
+  // The independent check, pull by pull, against what was still in place (in the release suite
+  // only: its brute force takes minutes under ASan, which still runs the disassembly).
+#if !defined(__SANITIZE_ADDRESS__)
   std::vector<bool> gone(a->parts.size(), false);
   for (const SequenceStep& s : r.sequence) {
     std::vector<std::size_t> staying;
@@ -48,6 +50,7 @@ TEST(Gearbox, ComesApartInItsKnownOrder) {
         << a->parts[s.parts[0]].name;
     gone[s.parts[0]] = true;
   }
+#endif
 }
 
 }  // namespace

@@ -50,12 +50,17 @@ DisassemblyResult take_out(const std::vector<std::string>& targets) {
 }
 
 // Every pull certified independently against what is still in place when it runs; the parts
-// not in the answer never move.
+// not in the answer never move. The sampled check in the release suite only (its brute force over
+// the triangle pairs: about 6 s per answer here, 2 to 3 min under ASan); the sanitizers still run
+// the disassembly and the checks of its steps.
 void expect_pulls_hold(const DisassemblyResult& r, const Assembly& a = gearbox()) {
   std::vector<bool> gone(a.parts.size(), false);
   for (const SequenceStep& s : r.sequence) {
     ASSERT_TRUE(s.removed);
     ASSERT_EQ(s.parts.size(), 1u);
+#if defined(__SANITIZE_ADDRESS__)
+    continue;
+#endif
     std::vector<std::size_t> staying;
     for (std::size_t i = 0; i < a.parts.size(); ++i)
       if (!gone[i] && i != s.parts[0]) staying.push_back(i);
