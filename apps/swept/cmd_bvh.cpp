@@ -51,11 +51,7 @@ void run(const BvhOptions& o) {
   Table table({"file", "fitter", "split", "triangles", "nodes", "depth", "total SA", "total volume",
                "build ms", "bytes", "bytes/tri"});
   for (const std::string& file : o.files) {
-    ProgressLine line(!o.quiet);
-    ImportOptions import = o.import.import_options();
-    import.progress = line.import_progress(std::filesystem::path(file).filename().string());
-    auto model = import_mesh(file, import);
-    line.clear();
+    auto model = import_mesh_with_progress(file, o.import.import_options(), o.quiet);
     if (!model) throw std::runtime_error(model.error().message);
     for (const std::string& w : model->warnings) std::cerr << "swept: warning: " << w << "\n";
     const TriangleSoup soup = model->merged();

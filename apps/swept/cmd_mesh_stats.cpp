@@ -34,11 +34,7 @@ void run(const MeshStatsOptions& o) {
   md += "\n|---|---:|---:|---:|---:|---:|\n";
   nlohmann::json meshes = nlohmann::json::array();
   for (const std::string& file : o.files) {
-    ProgressLine line(!o.quiet);
-    ImportOptions import = o.import.import_options();
-    import.progress = line.import_progress(std::filesystem::path(file).filename().string());
-    auto model = import_mesh(file, import);
-    line.clear();
+    auto model = import_mesh_with_progress(file, o.import.import_options(), o.quiet);
     if (!model) throw std::runtime_error(model.error().message);
     for (const std::string& w : model->warnings) std::cerr << "swept: warning: " << w << "\n";
     const scenes::MeshStats s = scenes::mesh_stats(model->merged().triangles);

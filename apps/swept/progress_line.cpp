@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace swept::cli {
 
@@ -74,12 +75,6 @@ void ProgressLine::fraction(const std::string& phase, double f) {
   draw_locked(line, f >= 1.0);
 }
 
-void ProgressLine::text(const std::string& line) {
-  if (!on_) return;
-  const std::lock_guard lock(mutex_);
-  draw_locked(line, false);
-}
-
 void ProgressLine::clear() {
   if (!on_) return;
   const std::lock_guard lock(mutex_);
@@ -105,6 +100,12 @@ std::function<void(const ImportProgress&)> ProgressLine::import_progress(const s
   if (!on_) return {};
   maybe_drawn_ = true;  // the child process may draw
   return [this, file](const ImportProgress& p) { fraction("reading " + file + "  " + p.phase, p.fraction); };
+}
+
+Result<ImportedModel> import_mesh_with_progress(const std::string& file, ImportOptions options, bool quiet) {
+  ProgressLine line(!quiet);
+  options.progress = line.import_progress(std::filesystem::path(file).filename().string());
+  return import_mesh(file, options);
 }
 
 }  // namespace swept::cli

@@ -28,8 +28,6 @@ class ProgressLine {
              const std::string& detail = "");
   /// "  <phase>  <percent> %  ETA <t>", for work known only as a fraction (0 to 1).
   void fraction(const std::string& phase, double f);
-  /// A line of the caller's own (redrawn as count()).
-  void text(const std::string& line);
   /// Erases the line, if one may have been drawn.
   void clear();
   /// Writes `text` and a newline to stderr above the line (the line is erased first, then drawn
@@ -53,6 +51,9 @@ class ProgressLine {
   std::chrono::steady_clock::time_point last_draw_{};
   std::string last_line_;  ///< what the line shows now
 };
+
+/// import_mesh() with a progress line while a CAD file is read (none when `quiet`).
+Result<ImportedModel> import_mesh_with_progress(const std::string& file, ImportOptions options, bool quiet);
 
 /// "12 s", "3 min 05 s", "2 h 10 min": a duration for a progress line.
 std::string progress_duration(double seconds);

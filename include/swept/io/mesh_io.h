@@ -21,13 +21,13 @@ namespace swept {
 /// Returns false for anything else.
 bool unit_scale(std::string_view unit, double& metres_per_unit);
 
-/// How to import: output unit, the file's unit where it has none, tessellation of CAD.
 /// Reported while a CAD file is read (ImportOptions::progress).
 struct ImportProgress {
   const char* phase = "";  ///< "shapes" (the file's entities to shapes), "meshing" (BRepMesh over the faces)
   double fraction = 0.0;   ///< of the phase, 0 to 1
 };
 
+/// How to import: output unit, the file's unit where it has none, tessellation of CAD.
 struct ImportOptions {
   /// Unit of the output coordinates.
   std::string unit = "mm";
